@@ -1,0 +1,37 @@
+// One attitude estimate as the estimators produce it (no DDS); components map it onto
+// plumb::topics::Attitude and the Attitude CSV of CONVENTIONS.md.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace plumb {
+
+struct Estimate {
+  std::string estimator;            // plugin name
+  double t_start = 0;               // s, first sample of the window
+  double t_end = 0;                 // s, last sample of the window
+  double inclination_deg = 0;
+  double azimuth_deg = 0;
+  double gravity_toolface_deg = 0;  // at t_end
+  double magnetic_toolface_deg = 0; // at t_end
+  double rpm = 0;
+  double inclination_sd_deg = 0;    // 0 when not estimated
+  double azimuth_sd_deg = 0;
+  double toolface_sd_deg = 0;
+  double dip_deg = 0;
+  double total_g = 0;
+  double total_b = 0;
+  std::uint32_t samples_used = 0;
+  bool valid = false;               // inclination usable
+  bool azimuth_valid = false;
+  bool toolface_valid = false;
+  bool rotating = false;
+  bool partial_window = false;
+  std::string reason;               // why not valid (or a warning); empty when all is well
+
+  // Every numeric output finite; estimators guarantee this (tests check it).
+  bool all_finite() const;
+};
+
+}  // namespace plumb
