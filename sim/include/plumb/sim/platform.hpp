@@ -46,10 +46,13 @@ struct Noise {
 };
 
 struct Vibration {
-  double lateral_rms = 0;     // m/s^2, band-limited lateral (x, y) vibration added to f
+  double lateral_rms = 0;     // m/s^2 rms on each of x and y: band-limited lateral vibration added to f
   double frequency_hz = 15;   // centre frequency
   double shock_rate_hz = 0;   // mean rate of shocks (Poisson)
   double shock_peak = 0;      // m/s^2, half-sine shocks of 2 ms
+  // Shock length; the sampled shock is never shorter than two sample periods (the sensor's
+  // anti-alias filter spreads it), so every shock shows in the samples.
+  double shock_duration_s = 0.002;
 };
 
 struct Scenario {
@@ -66,6 +69,8 @@ struct Scenario {
   Noise noise;
   TriadErrors accel_errors;
   TriadErrors mag_errors;
+  TriadErrors gyro_errors;
+  Vibration vibration;
   double temp_start_c = 25;    // temperature drifts linearly from start to end over the run
   double temp_end_c = 25;
   double earth_rate = 7.292115e-5;  // rad/s; gyros see it plus the platform rate
@@ -79,6 +84,8 @@ struct Scenario {
   // Noise standard deviations this scenario implies (SNR converted where given).
   double sigma_accel() const;
   double sigma_mag() const;
+  // Temperature at time t: linear from temp_start_c to temp_end_c over the duration, then held.
+  double temperature_at(double t) const;
 };
 
 // Produces the samples of a scenario one at a time, deterministic for a given seed.
@@ -92,18 +99,32 @@ class PlatformSimulator {
   // All samples (convenience for tests).
   std::vector<Sample> run(std::vector<TruthSample>* truth = nullptr);
   const Scenario& scenario() const { return scenario_; }
+  // next() keeps going past sample_count() (continuous platform angle, temperature held at its
+  // end value): a component may loop forever without a jump in the signals.
+  std::size_t index() const { return index_; }
 
  private:
+  static constexpr int kVibrationTones = 4;   // per lateral axis
+  Eigen::Vector3d vibration_at(double t);
   Scenario scenario_;
   std::size_t index_ = 0;
-  std::mt19937_64 rng_;
-  // Vibration and shock state live in the implementation.
-  double vib_phase_ = 0;
+  std::mt19937_64 rng_;        // sensor noise
+  std::mt19937_64 vib_rng_;    // vibration and shocks: separate, so the noise does not depend on them
+  std::normal_distribution<double> normal_{0.0, 1.0};
+  double sigma_accel_ = 0, sigma_mag_ = 0;
+  double vib_freq_[2][kVibrationTones] = {};
+  double vib_phase_[2][kVibrationTones] = {};
+  double vib_amplitude_ = 0;
   double shock_until_ = -1, shock_start_ = 0, shock_dir_ = 0, next_shock_ = 0;
 };
 
 // Parses a profile description: "60" (constant), "ramp:0:120:5", "stopgo:60:4", "stickslip:60:2".
 // Throws std::invalid_argument with a message saying what is accepted.
 RotationProfile parse_profile(const std::string& text);
+
+// One readable line for logs: "stick-slip, mean 60 rpm, period 2 s".
+std::string describe(const RotationProfile& profile);
+// One readable line: attitude, rotation, environment, rate and duration, noise, errors, seed.
+std::string describe(const Scenario& scenario);
 
 }  // namespace plumb::sim

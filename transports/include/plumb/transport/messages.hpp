@@ -12,6 +12,7 @@
 namespace plumb::topics {
 
 inline constexpr std::uint32_t kMaxSamplesPerBatch = 32;
+inline constexpr std::uint32_t kMaxCountersPerStatus = 32;  // ComponentStatus.counters bound
 
 // SensorSample.flags (idl/sensor.idl SAMPLE_*).
 namespace sample_flags {
@@ -44,6 +45,8 @@ inline constexpr std::size_t kIdMax = 63;
 inline constexpr std::size_t kReasonMax = 63;
 inline constexpr std::size_t kStateMax = 15;
 inline constexpr std::size_t kErrorMax = 127;
+inline constexpr std::size_t kComponentMax = 63;  // ComponentStatus.component
+inline constexpr std::size_t kHostMax = 63;       // ComponentStatus.host
 
 struct SensorSample {
   std::uint64_t seq = 0;

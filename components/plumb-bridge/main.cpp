@@ -1,0 +1,245 @@
+// plumb-bridge: the tool computer's hardware bridge. Reads the sensor board (a serial device,
+// docs/protocol.md) or replays a sensor CSV, checks every sample, and publishes raw and
+// calibrated sensor batches plus its own status once a second.
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <thread>
+
+#include <CLI/CLI.hpp>
+
+#include "batcher.hpp"
+#include "plumb/bridge/device_source.hpp"
+#include "plumb/bridge/replay_source.hpp"
+#include "plumb/bridge/sample_checker.hpp"
+#include "plumb/components/cli.hpp"
+#include "plumb/transport/topic_names.hpp"
+#include "publisher.hpp"
+
+namespace plumb::bridge {
+namespace {
+
+constexpr const char* kProgram = "plumb-bridge";
+using Clock = std::chrono::steady_clock;
+
+struct Options {
+  components::TransportOptions transport;
+  std::string device;
+  int baud = 115200;
+  std::string mode = "auto";
+  std::string replay;
+  std::string rate = "realtime";
+  bool strict = false;
+  std::string calibration_file;
+  bool no_calibration_topic = false;
+  PublisherOptions publish{transport::topic_names::kSensorRaw, transport::topic_names::kSensorCalibrated,
+                           transport::topic_names::kCalibration, transport::topic_names::kStatus, "board", false,
+                           false};
+  Limits limits;
+  double status_period_s = 1.0;
+  double backoff_min_s = 0.1;
+  double backoff_max_s = 5.0;
+  double duration_s = 0;
+  double wait_subscribers_s = 0;
+  double linger_s = 1.0;
+  int max_logged_errors = 20;
+};
+
+void add_options(CLI::App& app, Options& o) {
+  components::add_transport_options(app, o.transport);
+  auto* device = app.add_option("--device", o.device, "serial device of the sensor board (e.g. /dev/ttyUSB0)");
+  app.add_option("--baud", o.baud, "baud rate (a standard rate)")->capture_default_str();
+  app.add_option("--mode", o.mode, "wire protocol: auto (detected), binary or ascii")
+      ->check(CLI::IsMember({"auto", "binary", "ascii"}))
+      ->capture_default_str();
+  auto* replay = app.add_option("--replay", o.replay, "replay a sensor CSV file instead of reading a device");
+  app.add_option("--rate", o.rate, "replay pace: realtime, xN (N times faster) or max")->capture_default_str();
+  app.add_flag("--strict", o.strict, "replay: stop with exit code 1 at the first bad row (default: count, go on)");
+  device->excludes(replay);
+  app.add_option("--calibration", o.calibration_file, "coefficients file (docs/calibration.md) to apply from the start");
+  app.add_flag("--no-calibration-topic", o.no_calibration_topic, "ignore coefficients published on plumb/calibration");
+  auto* tool = app.add_option("--tool-id", o.publish.tool_id,
+                              "tool id in the batches; when given, only coefficients for this tool are applied")
+                   ->capture_default_str();
+  app.add_option("--raw-topic", o.publish.raw_topic, "topic of raw batches")->capture_default_str();
+  app.add_option("--calibrated-topic", o.publish.calibrated_topic, "topic of calibrated batches")->capture_default_str();
+  app.add_flag("--reliable", o.publish.reliable, "reliable sensor topics (nothing lost) instead of best effort");
+  app.add_option("--accel-full-scale", o.limits.accel_full_scale, "accelerometer saturation, m/s^2")->capture_default_str();
+  app.add_option("--accel-max", o.limits.accel_max, "accelerometer out-of-range limit, m/s^2")->capture_default_str();
+  app.add_option("--mag-full-scale", o.limits.mag_full_scale, "magnetometer saturation, uT")->capture_default_str();
+  app.add_option("--mag-max", o.limits.mag_max, "magnetometer out-of-range limit, uT")->capture_default_str();
+  app.add_option("--gyro-full-scale", o.limits.gyro_full_scale, "gyro saturation, rad/s")->capture_default_str();
+  app.add_option("--gyro-max", o.limits.gyro_max, "gyro out-of-range limit, rad/s")->capture_default_str();
+  app.add_option("--temp-min", o.limits.temp_min_c, "lowest plausible temperature, degC")->capture_default_str();
+  app.add_option("--temp-max", o.limits.temp_max_c, "highest plausible temperature, degC")->capture_default_str();
+  app.add_option("--status-period", o.status_period_s, "seconds between status messages")
+      ->check(CLI::Range(0.05, 3600.0))
+      ->capture_default_str();
+  app.add_option("--backoff-min", o.backoff_min_s, "first reopen delay after the device went away, s")
+      ->check(CLI::Range(0.001, 60.0))
+      ->capture_default_str();
+  app.add_option("--backoff-max", o.backoff_max_s, "longest reopen delay, s")->check(CLI::Range(0.001, 600.0))->capture_default_str();
+  app.add_option("--duration", o.duration_s, "stop after this many seconds (0: run until Ctrl-C or the replay ends)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--wait-subscribers", o.wait_subscribers_s,
+                 "seconds to wait at most for a sensor topic reader before reading the source")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--linger", o.linger_s, "seconds to stay after the end so reliable readers catch up")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--max-logged-errors", o.max_logged_errors, "bad rows/lines printed; later ones are only counted")
+      ->capture_default_str();
+  (void)tool;
+}
+
+void log(const std::string& line) { std::cout << kProgram << ": " << line << std::endl; }
+
+std::string summary(const Counters& c) {
+  std::ostringstream out;
+  bool first = true;
+  for (const auto& [name, value] : c.named()) {
+    if (value == 0) continue;
+    out << (first ? "" : ", ") << name << "=" << value;
+    first = false;
+  }
+  return first ? std::string("nothing counted") : out.str();
+}
+
+void sleep_while_running(double seconds) {
+  const auto until = Clock::now() + std::chrono::duration<double>(seconds);
+  while (!components::g_stop && Clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+}
+
+int run(const Options& o, const CLI::App& app) {
+  if (o.device.empty() == o.replay.empty()) throw std::invalid_argument("give either --device PATH or --replay FILE.csv");
+  if (o.limits.accel_full_scale <= 0 || o.limits.mag_full_scale <= 0 || o.limits.gyro_full_scale <= 0 ||
+      o.limits.temp_min_c >= o.limits.temp_max_c)
+    throw std::invalid_argument("limits: full scales must be > 0 and --temp-min below --temp-max");
+  if (o.backoff_min_s > o.backoff_max_s) throw std::invalid_argument("--backoff-min is above --backoff-max");
+
+  Counters counters;
+  int logged_errors = 0;
+  auto log_bad_input = [&](const std::string& what) {
+    if (logged_errors < o.max_logged_errors) std::cerr << kProgram << ": " << what << std::endl;
+    if (++logged_errors == o.max_logged_errors)
+      std::cerr << kProgram << ": further bad rows are counted (csv_errors) but not printed" << std::endl;
+  };
+
+  std::unique_ptr<SampleSource> source;
+  if (!o.replay.empty()) {
+    const double speed = parse_rate(o.rate);
+    source = std::make_unique<ReplaySource>(o.replay, speed, counters, o.strict,
+                                            [&](const csv::Error& e) { log_bad_input(std::string(e.what()) + " (row skipped)"); });
+  } else {
+    SerialOptions serial;
+    serial.path = o.device;
+    serial.baud = o.baud;
+    serial.backoff_min = std::chrono::milliseconds(std::llround(o.backoff_min_s * 1000));
+    serial.backoff_max = std::chrono::milliseconds(std::llround(o.backoff_max_s * 1000));
+    source = std::make_unique<DeviceSource>(serial, *parse_mode(o.mode), counters,
+                                            [](SerialPort::Event e, const std::string& what) {
+                                              log(e == SerialPort::Event::Opened ? "opened " + what
+                                                                                 : "device lost (" + what +
+                                                                                       "); reopening with back-off");
+                                            });
+  }
+
+  CalibrationModel file_model;
+  if (!o.calibration_file.empty()) file_model = read_calibration_file(o.calibration_file);
+
+  components::install_stop_handler();
+  auto connection = components::connect(o.transport, kProgram);
+  PublisherOptions po = o.publish;
+  po.match_tool_id = app.count("--tool-id") > 0;
+  if (o.no_calibration_topic) po.calibration_topic.clear();
+  Publisher publisher(*connection.participant, po, counters, log);
+
+  log("reading " + source->describe() + " -> " + connection.transport->name() + " " + po.raw_topic + " and " +
+      po.calibrated_topic + " (" + (po.reliable ? "reliable" : "best effort") + "), status on " + po.status_topic);
+  if (!o.calibration_file.empty() && !publisher.set_calibration(file_model, o.calibration_file))
+    throw std::invalid_argument(o.calibration_file + ": coefficients cannot be applied");
+  publisher.poll_calibration();
+  if (!publisher.has_calibration())
+    log("no calibration yet: raw data flows on " + po.raw_topic + "; " + po.calibrated_topic +
+        " starts once coefficients arrive" + (po.calibration_topic.empty() ? "" : " on " + po.calibration_topic));
+
+  if (o.wait_subscribers_s > 0) {
+    const auto until = Clock::now() + std::chrono::duration<double>(o.wait_subscribers_s);
+    while (publisher.sensor_readers() == 0 && Clock::now() < until && !components::g_stop)
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    log(std::to_string(publisher.sensor_readers()) + " sensor topic reader(s) matched");
+  }
+
+  SampleChecker checker(counters, o.limits);
+  Batcher batcher;
+  std::vector<Sample> samples;
+  const auto status_period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.status_period_s));
+  const auto started = Clock::now();
+  auto next_status = started;
+  auto next_calibration_poll = started;
+  std::uint64_t problems_at_last_status = 0;
+  std::string last_error;
+  bool source_alive = true;
+  try {
+    while (!components::g_stop && source_alive) {
+      samples.clear();
+      source_alive = source->poll(samples, std::chrono::milliseconds(10));
+      const auto now = Clock::now();
+      for (auto& s : samples) {
+        if (checker.check(s) && batcher.add(s, now)) publisher.publish(batcher.take());
+      }
+      if (batcher.due(now)) publisher.publish(batcher.take());
+      if (now >= next_calibration_poll) {
+        publisher.poll_calibration();
+        next_calibration_poll = now + std::chrono::milliseconds(100);
+      }
+      if (now >= next_status) {
+        const std::string error = source->last_error();
+        if (!error.empty()) last_error = error;
+        const bool new_problems = counters.problems() != problems_at_last_status;
+        problems_at_last_status = counters.problems();
+        publisher.publish_status(!source->healthy() || new_problems ? "degraded" : "running", last_error);
+        next_status += status_period;
+        if (next_status < now) next_status = now + status_period;
+      }
+      if (o.duration_s > 0 && now - started >= std::chrono::duration<double>(o.duration_s)) break;
+    }
+  } catch (const csv::Error& e) {  // --strict replay
+    publisher.publish(batcher.take());
+    publisher.publish_status("failed", e.what());
+    log("stopped at the first bad row (--strict); " + summary(counters));
+    throw;
+  }
+  publisher.publish(batcher.take());
+  if (!source->last_error().empty()) last_error = source->last_error();
+  publisher.publish_status("stopping", last_error);
+  log(std::string(components::g_stop ? "interrupted" : "finished") + "; " + summary(counters));
+  if (po.reliable && !components::g_stop) sleep_while_running(o.linger_s);
+  return 0;
+}
+
+}  // namespace
+}  // namespace plumb::bridge
+
+int main(int argc, char** argv) {
+  using namespace plumb::bridge;
+  CLI::App app{"plumb-bridge: reads the sensor board (serial device, docs/protocol.md) or replays a sensor CSV, "
+               "checks every sample, and publishes raw and calibrated sensor batches and its status over DDS"};
+  app.name(kProgram);
+  Options options;
+  add_options(app, options);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    return run(options, app);
+  } catch (const std::exception& e) {
+    plumb::components::print_error(kProgram, e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,28 @@
+// The estimator host loop, separate from main() so that it reads as one piece.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "plumb/components/cli.hpp"
+#include "plumb/transport/topic_names.hpp"
+
+namespace plumb::components {
+
+struct HostOptions {
+  TransportOptions transport;
+  std::vector<std::string> plugins;
+  std::string input_topic = transport::topic_names::kSensorCalibrated;
+  double window_s = 10;
+  std::vector<std::string> params;
+  std::string tool_id;
+  bool reliable = false;
+  double idle_flush_s = 2;
+  int max_estimates = 0;
+  double timeout_s = 0;
+  bool quiet = false;
+};
+
+int run_host(const HostOptions& options);
+
+}  // namespace plumb::components

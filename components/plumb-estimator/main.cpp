@@ -1,0 +1,37 @@
+// plumb-estimator: the estimator host. Subscribes to a sensor topic, runs one or more estimator
+// plugins side by side on the same stream and publishes one attitude topic per plugin.
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <map>
+
+#include "host.hpp"
+#include "plumb/components/cli.hpp"
+
+int main(int argc, char** argv) {
+  using namespace plumb;
+  components::HostOptions o;
+  CLI::App app{"plumb-estimator: run estimator plugins side by side on a sensor topic; publish plumb/attitude/<plugin>"};
+  components::add_transport_options(app, o.transport);
+  app.add_option("-p,--plugin", o.plugins, "estimator plugin (repeat for several; see `plumb plugins`)")->required();
+  app.add_option("--input", o.input_topic, "sensor topic to read")->capture_default_str();
+  app.add_option("-w,--window", o.window_s, "window length in seconds for windowed plugins")->capture_default_str();
+  app.add_option("--param", o.params, "plugin parameter KEY=VALUE, given to every plugin that declares KEY");
+  app.add_option("--tool-id", o.tool_id, "tool id put on attitude messages (default: the sensor batches' tool id)");
+  app.add_flag("--reliable", o.reliable, "reliable sensor reader (use with a reliable publisher: nothing lost)");
+  app.add_option("--flush-after-idle", o.idle_flush_s,
+                 "when no sample came for this many seconds, publish the partial windows (0: never)")
+      ->capture_default_str();
+  app.add_option("--count", o.max_estimates, "exit after publishing this many estimates per plugin (0: run until stopped)");
+  app.add_option("--timeout", o.timeout_s, "exit with an error if that many estimates did not come within this many seconds");
+  app.add_flag("-q,--quiet", o.quiet, "do not print each estimate");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    return components::run_host(o);
+  } catch (const std::exception& e) {
+    components::print_error("plumb-estimator", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,71 @@
+#include "dds_sink.hpp"
+
+#include <chrono>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+#include "plumb/components/convert.hpp"
+
+namespace plumb::sim_component {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Sleeps in small steps so Ctrl-C stays responsive.
+void sleep_while_running(double seconds) {
+  const auto until = Clock::now() + std::chrono::duration<double>(seconds);
+  while (!components::g_stop && Clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+}
+
+}  // namespace
+
+DdsSink::DdsSink(const DdsSinkOptions& options) : options_(options) {
+  connection_ = components::connect(options_.transport, "plumb-sim");
+  const auto qos = options_.reliable ? transport::Qos::reliable_stream() : transport::Qos::sensor_stream();
+  sensor_.emplace(transport::make_writer<topics::SensorBatch>(*connection_.participant, options_.sensor_topic, qos));
+  if (!options_.truth_topic.empty())
+    truth_.emplace(transport::make_writer<topics::Truth>(*connection_.participant, options_.truth_topic,
+                                                         transport::Qos::attitude()));
+}
+
+std::string DdsSink::describe() const {
+  std::ostringstream out;
+  out << connection_.transport->name() << " topic " << options_.sensor_topic << " ("
+      << (options_.reliable ? "reliable" : "best effort") << ")";
+  if (truth_) out << ", truth on " << options_.truth_topic;
+  return out.str();
+}
+
+bool DdsSink::start() {
+  if (options_.wait_subscribers_s <= 0) return true;
+  // Discovery takes a moment: without this wait the first batches go to nobody.
+  const auto until = Clock::now() + std::chrono::duration<double>(options_.wait_subscribers_s);
+  while (sensor_->matched_readers() == 0 && Clock::now() < until && !components::g_stop)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  if (components::g_stop) return false;
+  if (sensor_->matched_readers() == 0)
+    std::cout << "plumb-sim: no reader on " << options_.sensor_topic << " after " << options_.wait_subscribers_s
+              << " s; publishing anyway" << std::endl;
+  else
+    std::cout << "plumb-sim: " << sensor_->matched_readers() << " reader(s) matched on " << options_.sensor_topic
+              << std::endl;
+  return true;
+}
+
+void DdsSink::write(const std::vector<Sample>& samples, const std::vector<TruthSample>& truth) {
+  topics::SensorBatch batch;
+  batch.tool_id = components::bounded(options_.tool_id, topics::kToolIdMax);
+  batch.samples.reserve(samples.size());
+  for (const auto& s : samples) batch.samples.push_back(components::to_topic(s));
+  sensor_->write(batch);
+  ++batches_;
+  if (truth_ && !truth.empty()) truth_->write(components::to_topic(truth.back(), options_.tool_id));
+}
+
+void DdsSink::finish(bool interrupted) {
+  // Reliable delivery of the last batches needs the writer alive until readers acknowledge.
+  if (!interrupted && batches_ > 0) sleep_while_running(options_.linger_s);
+}
+
+}  // namespace plumb::sim_component

@@ -1,0 +1,42 @@
+// Publishes sensor batches and the truth (one per batch) on DDS through the vendor-neutral transport.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "plumb/components/cli.hpp"
+#include "plumb/transport/transport.hpp"
+#include "sink.hpp"
+
+namespace plumb::sim_component {
+
+struct DdsSinkOptions {
+  components::TransportOptions transport;
+  std::string sensor_topic;
+  std::string truth_topic;        // empty: no truth
+  bool reliable = false;
+  double wait_subscribers_s = 5;  // bounded wait for a matched reader before the first batch
+  double linger_s = 1;            // after the last batch, for reliable readers to catch up
+  std::string tool_id;
+};
+
+class DdsSink final : public Sink {
+ public:
+  // Throws transport::Error when the transport cannot start.
+  explicit DdsSink(const DdsSinkOptions& options);
+  std::string describe() const override;
+  bool start() override;
+  void write(const std::vector<Sample>& samples, const std::vector<TruthSample>& truth) override;
+  void finish(bool interrupted) override;
+  std::uint64_t messages() const override { return batches_; }
+
+ private:
+  DdsSinkOptions options_;
+  components::Connection connection_;
+  std::optional<transport::Writer<topics::SensorBatch>> sensor_;
+  std::optional<transport::Writer<topics::Truth>> truth_;
+  std::uint64_t batches_ = 0;
+};
+
+}  // namespace plumb::sim_component

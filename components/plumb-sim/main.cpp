@@ -1,0 +1,167 @@
+// plumb-sim: the simulated rotating platform (sim/) as a component. Publishes sensor batches on
+// plumb/sensor/raw (or any sensor topic) and the truth on plumb/sim/truth, paced in real time,
+// or writes the same run as CSV files.
+#include <algorithm>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "csv_sink.hpp"
+#include "dds_sink.hpp"
+#include "pacing.hpp"
+#include "plumb/components/cli.hpp"
+#include "plumb/sim/platform.hpp"
+#include "plumb/transport/messages.hpp"
+#include "plumb/transport/topic_names.hpp"
+#include "scenario_options.hpp"
+#include "serial_sink.hpp"
+
+namespace plumb::sim_component {
+namespace {
+
+constexpr const char* kProgram = "plumb-sim";
+
+struct OutputOptions {
+  components::TransportOptions transport;
+  std::string topic = transport::topic_names::kSensorRaw;
+  std::string truth_topic = transport::topic_names::kSimTruth;
+  bool no_truth = false;
+  std::string rate = "realtime";
+  int batch = 10;
+  bool reliable = false;
+  double wait_subscribers_s = 5;
+  double linger_s = 1;
+  std::string csv_dir;
+  bool loop = false;
+  SerialSinkOptions serial;
+};
+
+void add_output_options(CLI::App& app, OutputOptions& o) {
+  components::add_transport_options(app, o.transport);
+  app.add_option("--topic", o.topic, "sensor topic to publish on (e.g. plumb/sensor/calibrated to skip the bridge)")
+      ->capture_default_str();
+  app.add_option("--truth-topic", o.truth_topic, "topic for the truth, one message per batch")->capture_default_str();
+  app.add_flag("--no-truth", o.no_truth, "do not publish the truth");
+  app.add_option("--rate", o.rate, "pacing: realtime, xN (N times faster) or max")->capture_default_str();
+  app.add_option("--batch", o.batch, "samples per batch (1..32)")->capture_default_str()->check(CLI::Range(1, 32));
+  app.add_flag("--reliable", o.reliable, "reliable sensor stream (nothing lost) instead of best effort");
+  app.add_option("--wait-subscribers", o.wait_subscribers_s,
+                 "seconds to wait at most for a reader of the sensor topic before starting (0: do not wait)")
+      ->capture_default_str();
+  app.add_option("--linger", o.linger_s, "seconds to stay after the last batch so reliable readers catch up")
+      ->capture_default_str();
+  app.add_option("--csv", o.csv_dir, "write DIR/sensor.csv and DIR/truth.csv instead of publishing");
+  app.add_option("--serial", o.serial.path,
+                 "write the sensor board protocol (docs/protocol.md) into a pseudo-terminal linked at PATH "
+                 "(or into PATH if it is a serial device) instead of publishing; use --batch 1 for per-sample timing");
+  app.add_option("--serial-baud", o.serial.baud, "baud rate when --serial names a real device")->capture_default_str();
+  app.add_option("--serial-mode", o.serial.mode, "--serial protocol: binary or ascii")->capture_default_str();
+  app.add_flag("--loop", o.loop, "keep simulating past the duration until Ctrl-C (platform keeps turning)");
+}
+
+std::unique_ptr<Sink> make_sink(const OutputOptions& o, const sim::Scenario& scenario) {
+  if (!o.csv_dir.empty() && !o.serial.path.empty()) throw std::invalid_argument("give --csv or --serial, not both");
+  if (!o.csv_dir.empty()) return std::make_unique<CsvSink>(o.csv_dir, scenario.with_gyro);
+  if (!o.serial.path.empty()) return std::make_unique<SerialSink>(o.serial);
+  const auto type = transport::topic_type_for(o.topic);
+  if (type && *type != transport::TopicType::SensorBatch)
+    throw std::invalid_argument("--topic " + o.topic + " is not a sensor topic (expected plumb/sensor/...)");
+  DdsSinkOptions d;
+  d.transport = o.transport;
+  d.sensor_topic = o.topic;
+  d.truth_topic = o.no_truth ? "" : o.truth_topic;
+  d.reliable = o.reliable;
+  d.wait_subscribers_s = o.wait_subscribers_s;
+  d.linger_s = o.linger_s;
+  d.tool_id = scenario.tool_id;
+  return std::make_unique<DdsSink>(d);
+}
+
+struct RunResult {
+  std::uint64_t samples = 0;
+  std::uint64_t batches = 0;
+};
+
+RunResult run(sim::PlatformSimulator& simulator, Sink& sink, double speed, std::size_t batch_size, bool loop) {
+  Pacer pacer(sink.paced() ? speed : 0.0);
+  RunResult result;
+  std::vector<Sample> samples;
+  std::vector<TruthSample> truth;
+  samples.reserve(batch_size);
+  truth.reserve(batch_size);
+  const double period = 1.0 / simulator.scenario().sample_rate_hz;
+  while (!components::g_stop && (loop || !simulator.done())) {
+    samples.clear();
+    truth.clear();
+    while (samples.size() < batch_size && (loop || !simulator.done())) {
+      TruthSample t;
+      samples.push_back(simulator.next(&t));
+      truth.push_back(t);
+    }
+    // A batch leaves when its last sample has been measured, one period after its stamp.
+    pacer.wait_until(samples.back().t + period);
+    if (components::g_stop) break;
+    sink.write(samples, truth);
+    result.samples += samples.size();
+    ++result.batches;
+  }
+  return result;
+}
+
+int run_main(int argc, char** argv) {
+  CLI::App app{"plumb-sim: simulated rotating sensor platform (accelerometers, magnetometers, gyros) publishing "
+               "sensor batches and the truth over DDS, or writing them as CSV"};
+  app.name(kProgram);
+  ScenarioOptions scenario_options;
+  OutputOptions output_options;
+  add_scenario_options(app, scenario_options);
+  add_output_options(app, output_options);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+
+  try {
+    const sim::Scenario scenario = make_scenario(app, scenario_options);
+    sim::PlatformSimulator simulator(scenario);
+    const double speed = parse_speed(output_options.rate);
+    if (output_options.loop && !output_options.csv_dir.empty())
+      throw std::invalid_argument("--loop cannot be used with --csv (the files would never end)");
+    if (simulator.sample_count() == 0 && !output_options.loop)
+      throw std::invalid_argument("the scenario has no samples (duration x rate < 1)");
+
+    components::install_stop_handler();
+    auto sink = make_sink(output_options, scenario);
+    std::cout << kProgram << ": simulating " << sim::describe(scenario) << " -> " << sink->describe() << ", "
+              << (sink->paced() ? (speed > 0 ? (speed == 1 ? std::string("real time")
+                                                           : "x" + std::to_string(speed) + " real time")
+                                             : std::string("as fast as possible"))
+                                : std::string("as fast as possible"))
+              << (output_options.loop ? ", looping until Ctrl-C" : "") << std::endl;
+    if (!sink->start()) {
+      std::cout << kProgram << ": stopped before starting" << std::endl;
+      return 0;
+    }
+    const RunResult result =
+        run(simulator, *sink, speed, static_cast<std::size_t>(output_options.batch), output_options.loop);
+    const bool interrupted = components::g_stop;
+    sink->finish(interrupted);
+    std::cout << kProgram << ": " << (interrupted ? "stopped; " : "done; ") << result.samples << " samples in "
+              << result.batches << " batches to " << sink->describe() << std::endl;
+    return 0;
+  } catch (const std::exception& e) {
+    components::print_error(kProgram, e.what());
+    return 1;
+  }
+}
+
+}  // namespace
+}  // namespace plumb::sim_component
+
+int main(int argc, char** argv) { return plumb::sim_component::run_main(argc, argv); }

@@ -1,0 +1,24 @@
+// Real-time pacing of the simulated stream: "realtime", "xN" (N times faster) or "max".
+#pragma once
+
+#include <chrono>
+#include <string>
+
+namespace plumb::sim_component {
+
+// Speed factor from its text; 0 means as fast as possible. Throws std::invalid_argument.
+double parse_speed(const std::string& text);
+
+class Pacer {
+ public:
+  explicit Pacer(double speed) : speed_(speed) {}
+  // Sleeps until simulated time `t` (s since the start) is due; returns early on Ctrl-C.
+  void wait_until(double t);
+
+ private:
+  double speed_;
+  bool started_ = false;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace plumb::sim_component

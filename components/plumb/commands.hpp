@@ -1,0 +1,16 @@
+// The subcommands of the `plumb` tool; each registers itself on the CLI11 app and runs when chosen.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace plumb::cli {
+
+void add_topic_commands(CLI::App& app);      // topic list | echo | hz | pub
+void add_listing_commands(CLI::App& app);    // transports, plugins
+void add_estimate_command(CLI::App& app);    // estimate (offline, CSV in, CSV out)
+void add_compare_command(CLI::App& app);     // compare (scenario grid, CRB, plots)
+
+// Set by a subcommand's callback: the process exit code.
+extern int g_exit_code;
+
+}  // namespace plumb::cli

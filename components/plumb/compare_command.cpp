@@ -1,0 +1,142 @@
+// plumb compare: estimator plugins side by side on simulated scenarios, beside the Cramér–Rao bound.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "commands.hpp"
+#include "fields.hpp"
+#include "plumb/compare/compare.hpp"
+
+namespace plumb::cli {
+namespace {
+
+struct CompareOptions {
+  std::vector<std::string> estimators{"static", "integral", "compensated"};
+  std::vector<double> inclinations{0.5, 1, 2};
+  std::vector<double> rpms{0, 60, 120};
+  std::vector<double> snr_accel{10, 20};
+  double snr_mag = 20;
+  std::vector<double> azimuths;
+  int seeds = 4;
+  std::uint64_t seed = 1;
+  std::string profile;
+  double duration_s = 10;
+  double rate_hz = 100;
+  double g = 10, field = 48.4, dip = 45.5;
+  std::string accel_bias, mag_bias;
+  std::vector<std::string> params;
+  std::string plots_dir;
+  std::string csv_path;
+};
+
+Eigen::Vector3d parse_vector(const std::string& text, const std::string& option) {
+  const auto parts = split(text, ',');
+  if (parts.size() != 3) throw std::invalid_argument(option + " takes x,y,z");
+  Eigen::Vector3d v;
+  for (int i = 0; i < 3; ++i) parse_scalar(parts[static_cast<std::size_t>(i)], v[i], option);
+  return v;
+}
+
+// Progress on stderr: a redrawn bar on a terminal, a line every 10% otherwise (logs, CI).
+compare::ProgressCallback progress_printer() {
+  const bool tty = isatty(STDERR_FILENO);
+  auto last_decile = std::make_shared<int>(-1);
+  return [tty, last_decile](std::size_t done, std::size_t total) {
+    const int percent = total ? static_cast<int>(100 * done / total) : 100;
+    if (tty) {
+      const int filled = percent / 4;
+      std::cerr << "\r[" << std::string(static_cast<std::size_t>(filled), '#') << std::string(static_cast<std::size_t>(25 - filled), ' ')
+                << "] " << percent << "% (" << done << "/" << total << " records)" << (done == total ? "\n" : "") << std::flush;
+    } else if (percent / 10 != *last_decile) {
+      *last_decile = percent / 10;
+      std::cerr << "plumb compare: " << percent << "% (" << done << "/" << total << " records)" << std::endl;
+    }
+  };
+}
+
+int run(const CompareOptions& o) {
+  compare::CompareConfig c;
+  c.plugins = o.estimators;
+  c.inclinations_deg = o.inclinations;
+  c.rpms = o.rpms;
+  c.snr_accel_db = o.snr_accel;
+  c.snr_mag_db = o.snr_mag;
+  c.azimuths_deg = o.azimuths;
+  if (o.seeds < 1) throw std::invalid_argument("--seeds must be at least 1");
+  c.seeds = o.seeds;
+  c.base_seed = o.seed;
+  if (o.duration_s <= 0 || o.rate_hz <= 0) throw std::invalid_argument("--duration and --rate-hz must be positive");
+  c.base.duration_s = o.duration_s;
+  c.base.sample_rate_hz = o.rate_hz;
+  c.base.g = o.g;
+  c.base.total_b = o.field;
+  c.base.dip_deg = o.dip;
+  if (!o.profile.empty()) c.base.rotation = sim::parse_profile(o.profile);
+  if (!o.accel_bias.empty()) c.base.accel_errors.bias = parse_vector(o.accel_bias, "--accel-bias");
+  if (!o.mag_bias.empty()) c.base.mag_errors.bias = parse_vector(o.mag_bias, "--mag-bias");
+  for (const auto& kv : o.params) {
+    const auto eq = kv.find('=');
+    const auto dot = kv.find('.');
+    if (eq == std::string::npos || dot == std::string::npos || dot > eq)
+      throw std::invalid_argument("--param '" + kv + "' is not PLUGIN.KEY=VALUE");
+    c.plugin_parameters[kv.substr(0, dot)][kv.substr(dot + 1, eq - dot - 1)] = kv.substr(eq + 1);
+  }
+  const auto result = compare::run_compare(c, progress_printer());
+  compare::write_report(std::cout, result);
+  std::cout << result.records << " records in " << format_number(result.seconds) << " s\n";
+  if (!o.csv_path.empty()) {
+    std::ofstream f(o.csv_path);
+    if (!f) throw std::runtime_error("cannot write '" + o.csv_path + "'");
+    compare::write_csv(f, result);
+  }
+  if (!o.plots_dir.empty()) {
+    std::filesystem::create_directories(o.plots_dir);
+    for (double rpm : o.rpms) {
+      for (double snr : o.snr_accel) {
+        for (bool inc : {false, true}) {
+          const std::string path = o.plots_dir + "/" + (inc ? "inclination" : "azimuth") + "_error_" +
+                                   format_number(rpm) + "rpm_snr" + format_number(snr) + "dB.svg";
+          std::ofstream f(path);
+          if (!f) throw std::runtime_error("cannot write '" + path + "'");
+          compare::write_svg_plot(f, result, {rpm, snr, inc});
+          std::cerr << "plumb compare: wrote " << path << '\n';
+        }
+      }
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_compare_command(CLI::App& app) {
+  auto o = std::make_shared<CompareOptions>();
+  auto* cmd = app.add_subcommand("compare",
+                                 "Run estimator plugins over a grid of simulated scenarios (default: the source paper's "
+                                 "reference grid) and print RMS and maximum errors beside the Cramér–Rao bound");
+  cmd->add_option("-e,--estimator", o->estimators, "plugins to compare")->capture_default_str();
+  cmd->add_option("--inclination", o->inclinations, "inclinations, deg")->capture_default_str();
+  cmd->add_option("--rpm", o->rpms, "platform speeds, rpm")->capture_default_str();
+  cmd->add_option("--snr-accel", o->snr_accel, "accelerometer SNRs, dB (CONVENTIONS.md)")->capture_default_str();
+  cmd->add_option("--snr-mag", o->snr_mag, "magnetometer SNR, dB")->capture_default_str();
+  cmd->add_option("--azimuth", o->azimuths, "azimuths, deg (default 0, 10, ..., 350)");
+  cmd->add_option("--seeds", o->seeds, "Monte Carlo records per azimuth")->capture_default_str();
+  cmd->add_option("--seed", o->seed, "first random seed")->capture_default_str();
+  cmd->add_option("--profile", o->profile, "rotation profile with the grid speed as mean: stopgo:0:4, stickslip:0:2, ramp:...");
+  cmd->add_option("--duration", o->duration_s, "record length, s")->capture_default_str();
+  cmd->add_option("--rate-hz", o->rate_hz, "sampling rate, Hz")->capture_default_str();
+  cmd->add_option("--g", o->g, "gravity, m/s^2")->capture_default_str();
+  cmd->add_option("--field", o->field, "total field, uT")->capture_default_str();
+  cmd->add_option("--dip", o->dip, "dip, deg")->capture_default_str();
+  cmd->add_option("--accel-bias", o->accel_bias, "accelerometer bias x,y,z, m/s^2");
+  cmd->add_option("--mag-bias", o->mag_bias, "magnetometer bias x,y,z, uT");
+  cmd->add_option("-p,--param", o->params, "plugin parameter PLUGIN.KEY=VALUE");
+  cmd->add_option("--plots", o->plots_dir, "write SVG plots of error versus azimuth per inclination into this folder");
+  cmd->add_option("--csv", o->csv_path, "also write the table as CSV");
+  cmd->callback([o] { g_exit_code = run(*o); });
+}
+
+}  // namespace plumb::cli

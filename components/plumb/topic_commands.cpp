@@ -1,0 +1,266 @@
+// plumb topic list | echo | hz | pub
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <thread>
+
+#include "commands.hpp"
+#include "fields.hpp"
+#include "plumb/components/cli.hpp"
+#include "topic_type.hpp"
+
+namespace plumb::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using components::g_stop;
+
+struct TopicOptions {
+  components::TransportOptions transport;
+  std::string topic;
+  bool csv = false;
+  int count = 0;          // 0 = until interrupted
+  double timeout_s = 0;   // 0 = none
+  double wait_s = 2;
+  double rate_hz = 1;
+  std::vector<std::string> assignments;
+  bool reliable = false;
+};
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// CSV rows of a message: its non-sequence fields, then one row per element of its sequence field
+// (the samples of a sensor batch, the counters of a status) with the element's fields.
+template <class M> std::vector<Flat> csv_rows(const M& m) {
+  Flat base;
+  std::vector<Flat> elements;
+  topics::visit_fields(m, [&](const char* name, const auto& field) {
+    using F = std::decay_t<decltype(field)>;
+    if constexpr (is_vector<F>::value) {
+      for (const auto& e : field) {
+        Flat row;
+        flatten(e, std::string(name) + ".", row);
+        elements.push_back(std::move(row));
+      }
+    } else {
+      if constexpr (is_array<F>::value) {
+        for (std::size_t i = 0; i < field.size(); ++i) base.emplace_back(std::string(name) + "." + std::to_string(i), scalar_text(field[i]));
+      } else if constexpr (std::is_class_v<F> && !std::is_same_v<F, std::string>) {
+        flatten(field, std::string(name) + ".", base);
+      } else {
+        base.emplace_back(name, scalar_text(field));
+      }
+    }
+  });
+  if (elements.empty()) return {base};
+  std::vector<Flat> rows;
+  for (auto& e : elements) {
+    Flat row = base;
+    row.insert(row.end(), e.begin(), e.end());
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+std::string csv_escape(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) out += (c == '"') ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+int run_echo(const TopicOptions& o) {
+  auto conn = components::connect(o.transport, "plumb-topic-echo");
+  const auto type = resolve_topic_type(*conn.participant, o.topic, o.wait_s);
+  return with_topic_type(type, [&](auto proto) {
+    using M = decltype(proto);
+    auto qos = transport::default_qos_for_topic(o.topic);
+    if (type == transport::TopicType::SensorBatch && !o.reliable) qos = transport::Qos::sensor_stream();
+    auto reader = transport::make_reader<M>(*conn.participant, o.topic, qos);
+    components::install_stop_handler();
+    const auto t0 = Clock::now();
+    int received = 0;
+    bool header_done = false;
+    std::vector<std::string> header;
+    M msg;
+    while (!g_stop && (o.count == 0 || received < o.count)) {
+      if (o.timeout_s > 0 && seconds_since(t0) > o.timeout_s) break;
+      reader.wait(std::chrono::milliseconds(100));
+      while ((o.count == 0 || received < o.count) && reader.take(msg)) {
+        ++received;
+        if (!o.csv) {
+          print_yaml(std::cout, msg);
+          std::cout << "---" << std::endl;
+          continue;
+        }
+        for (const auto& row : csv_rows(msg)) {
+          if (!header_done) {
+            for (std::size_t i = 0; i < row.size(); ++i) std::cout << (i ? "," : "") << row[i].first;
+            std::cout << '\n';
+            header_done = true;
+          }
+          for (std::size_t i = 0; i < row.size(); ++i) std::cout << (i ? "," : "") << csv_escape(row[i].second);
+          std::cout << '\n';
+        }
+        std::cout.flush();
+      }
+    }
+    if (o.count > 0 && received < o.count) {
+      std::cerr << "plumb topic echo: received " << received << " of " << o.count << " messages on '" << o.topic
+                << "'" << (g_stop ? " (interrupted)" : " before the timeout") << std::endl;
+      return 1;
+    }
+    return 0;
+  });
+}
+
+int run_hz(const TopicOptions& o) {
+  auto conn = components::connect(o.transport, "plumb-topic-hz");
+  const auto type = resolve_topic_type(*conn.participant, o.topic, o.wait_s);
+  return with_topic_type(type, [&](auto proto) {
+    using M = decltype(proto);
+    auto qos = transport::default_qos_for_topic(o.topic);
+    if (type == transport::TopicType::SensorBatch) qos = transport::Qos::sensor_stream();
+    auto reader = transport::make_reader<M>(*conn.participant, o.topic, qos);
+    components::install_stop_handler();
+    const auto t0 = Clock::now();
+    auto last_report = t0;
+    std::vector<double> arrivals;  // seconds since t0, within the current report
+    std::size_t samples = 0, total = 0;
+    int reports = 0;
+    M msg;
+    while (!g_stop && (o.count == 0 || reports < o.count)) {
+      if (o.timeout_s > 0 && seconds_since(t0) > o.timeout_s) break;
+      reader.wait(std::chrono::milliseconds(50));
+      while (reader.take(msg)) {
+        arrivals.push_back(seconds_since(t0));
+        ++total;
+        if constexpr (std::is_same_v<M, topics::SensorBatch>) samples += msg.samples.size();
+      }
+      if (std::chrono::duration<double>(Clock::now() - last_report).count() < 1.0) continue;
+      const double span = std::chrono::duration<double>(Clock::now() - last_report).count();
+      last_report = Clock::now();
+      ++reports;
+      if (arrivals.size() < 2) {
+        std::cout << "no messages (" << arrivals.size() << " in the last " << format_number(span) << " s)" << std::endl;
+        arrivals.clear();
+        samples = 0;
+        continue;
+      }
+      double min_dt = 1e9, max_dt = 0, sum = 0, sum2 = 0;
+      for (std::size_t i = 1; i < arrivals.size(); ++i) {
+        const double dt = arrivals[i] - arrivals[i - 1];
+        min_dt = std::min(min_dt, dt);
+        max_dt = std::max(max_dt, dt);
+        sum += dt;
+        sum2 += dt * dt;
+      }
+      const double n = static_cast<double>(arrivals.size() - 1);
+      const double mean = sum / n;
+      std::cout << "average rate: " << format_number(1.0 / mean) << " Hz  min: " << format_number(min_dt)
+                << " s  max: " << format_number(max_dt) << " s  std dev: "
+                << format_number(std::sqrt(std::max(0.0, sum2 / n - mean * mean))) << " s  window: " << arrivals.size();
+      if constexpr (std::is_same_v<M, topics::SensorBatch>) std::cout << "  samples/s: " << format_number(samples / span);
+      std::cout << std::endl;
+      arrivals.clear();
+      samples = 0;
+    }
+    if (total == 0) {
+      std::cerr << "plumb topic hz: no message received on '" << o.topic << "'" << std::endl;
+      return 1;
+    }
+    return 0;
+  });
+}
+
+int run_pub(const TopicOptions& o) {
+  auto conn = components::connect(o.transport, "plumb-topic-pub");
+  const auto type = resolve_topic_type(*conn.participant, o.topic, 0.5);
+  return with_topic_type(type, [&](auto proto) {
+    using M = decltype(proto);
+    M msg = proto;
+    for (const auto& a : o.assignments) {
+      const auto eq = a.find('=');
+      if (eq == std::string::npos || eq == 0)
+        throw std::invalid_argument("'" + a + "' is not FIELD=VALUE (e.g. inclination_deg=1.5)");
+      set_field(msg, a.substr(0, eq), a.substr(eq + 1));
+    }
+    auto writer = transport::make_writer<M>(*conn.participant, o.topic, transport::default_qos_for_topic(o.topic));
+    components::install_stop_handler();
+    // Give subscribers a moment to match so the first message is not sent into the void.
+    const auto t0 = Clock::now();
+    while (!g_stop && writer.matched_readers() == 0 && seconds_since(t0) < o.wait_s)
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    const int count = o.count > 0 ? o.count : 1;
+    const auto period = std::chrono::duration<double>(1.0 / std::max(o.rate_hz, 1e-3));
+    auto next = Clock::now();
+    for (int i = 0; i < count && !g_stop; ++i) {
+      writer.write(msg);
+      next += std::chrono::duration_cast<Clock::duration>(period);
+      if (i + 1 < count) std::this_thread::sleep_until(next);
+    }
+    std::cerr << "plumb topic pub: published " << count << " message(s) on '" << o.topic << "' ("
+              << writer.matched_readers() << " subscriber(s) matched)" << std::endl;
+    // Reliable writers keep unacknowledged data only while they live: linger briefly.
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    return 0;
+  });
+}
+
+int run_list(const TopicOptions& o) {
+  auto conn = components::connect(o.transport, "plumb-topic-list");
+  std::this_thread::sleep_for(std::chrono::duration<double>(o.wait_s));
+  auto topics = conn.participant->discovered_topics();
+  std::sort(topics.begin(), topics.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+  if (topics.empty()) std::cerr << "plumb topic list: no topics seen within " << o.wait_s << " s" << std::endl;
+  for (const auto& t : topics) {
+    std::cout << t.name << "  [" << t.type_name << "]  writers: " << t.writers << "  readers: " << t.readers << '\n';
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_topic_commands(CLI::App& app) {
+  auto* topic = app.add_subcommand("topic", "List, print, measure and publish topics");
+  topic->require_subcommand(1);
+  auto o = std::make_shared<TopicOptions>();
+
+  auto* list = topic->add_subcommand("list", "List the topics seen through DDS discovery");
+  components::add_transport_options(*list, o->transport);
+  list->add_option("--wait", o->wait_s, "seconds to listen for discovery")->capture_default_str();
+  list->callback([o] { g_exit_code = run_list(*o); });
+
+  auto* echo = topic->add_subcommand("echo", "Print the messages of a topic (YAML-like, or CSV with --csv)");
+  components::add_transport_options(*echo, o->transport);
+  echo->add_option("topic", o->topic, "topic name, e.g. plumb/attitude/compensated")->required();
+  echo->add_flag("--csv", o->csv, "print CSV: a header, then one row per message (per sample for sensor batches)");
+  echo->add_option("--count", o->count, "exit after this many messages (exit 1 if fewer arrive)");
+  echo->add_option("--timeout", o->timeout_s, "give up after this many seconds");
+  echo->add_option("--wait", o->wait_s, "seconds to wait for discovery of a topic outside plumb's names")->capture_default_str();
+  echo->add_flag("--reliable", o->reliable, "reliable reader on sensor topics (default best-effort)");
+  echo->callback([o] { g_exit_code = run_echo(*o); });
+
+  auto* hz = topic->add_subcommand("hz", "Measure the publishing rate of a topic, once a second");
+  components::add_transport_options(*hz, o->transport);
+  hz->add_option("topic", o->topic, "topic name")->required();
+  hz->add_option("--count", o->count, "exit after this many one-second reports");
+  hz->add_option("--timeout", o->timeout_s, "exit after this many seconds");
+  hz->add_option("--wait", o->wait_s, "seconds to wait for discovery of a topic outside plumb's names")->capture_default_str();
+  hz->callback([o] { g_exit_code = run_hz(*o); });
+
+  auto* pub = topic->add_subcommand("pub", "Publish a message built from FIELD=VALUE assignments");
+  pub->footer("Fields by path: tool_id=T1 inclination_deg=1.5 accelerometer.bias=0.1,0,0 samples.0.fz=-9.8");
+  components::add_transport_options(*pub, o->transport);
+  pub->add_option("topic", o->topic, "topic name")->required();
+  pub->add_option("fields", o->assignments, "FIELD=VALUE assignments; unset fields are zero/empty");
+  pub->add_option("--count", o->count, "messages to publish (default 1)");
+  pub->add_option("--rate", o->rate_hz, "messages per second")->capture_default_str();
+  pub->add_option("--wait", o->wait_s, "seconds to wait for a subscriber before publishing")->capture_default_str();
+  pub->callback([o] { g_exit_code = run_pub(*o); });
+}
+
+}  // namespace plumb::cli

@@ -1,0 +1,35 @@
+// Pieces the procedures share (private to the library).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "plumb/calibration/procedures.hpp"
+
+namespace plumb::calibration::detail {
+
+// Runs a procedure body; a CalibrationError (or any exception) becomes Outcome::error and the
+// warnings gathered so far are kept.
+Outcome run_guarded(const std::function<Result(std::vector<std::string>& warnings)>& body);
+
+// Appends parameters named prefix + names[i] with values and the sds from the covariance diagonal.
+void add_parameters(std::vector<Parameter>& out, const std::string& prefix, const std::vector<std::string>& names,
+                    const Eigen::VectorXd& values, const Eigen::MatrixXd& covariance, const std::string& unit = "");
+
+// Temperature difference from the reference for a station (0 without a thermometer).
+double station_dT(const CalibrationModel& m, const StationAverage& s);
+
+// Residuals of every station against the model (orientation known: direction and inclination
+// before/after; unknown: only the norm). Adds a warning per station beyond warn_deg.
+std::vector<StationResidual> accel_residuals(const CalibrationModel& model, const CalibrationModel& nominal,
+                                             const std::vector<StationAverage>& stations, double g, double warn_deg,
+                                             std::vector<std::string>& warnings);
+
+void fill_identity(Result& r, const CommonOptions& o);
+
+std::string format(double x, int precision = 4);
+
+}  // namespace plumb::calibration::detail

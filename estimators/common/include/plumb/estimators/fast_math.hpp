@@ -1,0 +1,43 @@
+// atan2 to ~1e-13 rad at a fraction of libm's cost: the per-sample toolface is the hot spot of
+// the rotating estimators (goal: 20 million samples per second per core).
+#pragma once
+
+#include <cmath>
+
+namespace plumb::estimators {
+
+namespace detail {
+// tan(k pi/16) and k pi/16, k = 0..4: centres of the reduction atan(x) = atan(c) + atan((x-c)/(1+cx)).
+inline constexpr double kTanCentre[5] = {0.0, 0.19891236737965800691, 0.41421356237309504880,
+                                         0.66817863791929891999, 1.0};
+inline constexpr double kAngleCentre[5] = {0.0, 0.19634954084936207740, 0.39269908169872415481,
+                                           0.58904862254808623221, 0.78539816339744830962};
+// tan((k + 1/2) pi/16): boundaries between centres.
+inline constexpr double kBoundary[4] = {0.09849140335716425, 0.30334668360734239, 0.53451113595079149,
+                                        0.82067879082866024};
+
+// atan on [0, 1].
+inline double atan_unit(double x) {
+  int k = 0;
+  while (k < 4 && x > kBoundary[k]) ++k;
+  const double c = kTanCentre[k];
+  const double r = (x - c) / (1.0 + c * x);  // |r| <= tan(pi/32) ~ 0.0985
+  const double r2 = r * r;
+  // Taylor series to r^13: remainder < r^15/15 ~ 1e-16.
+  const double p = 1.0 - r2 * (1.0 / 3 - r2 * (1.0 / 5 - r2 * (1.0 / 7 - r2 * (1.0 / 9 - r2 * (1.0 / 11 - r2 / 13)))));
+  return kAngleCentre[k] + r * p;
+}
+}  // namespace detail
+
+inline double fast_atan2(double y, double x) {
+  constexpr double kHalfPi = 1.57079632679489661923, kPiValue = 3.14159265358979323846;
+  const double ax = std::fabs(x), ay = std::fabs(y);
+  if (ax == 0.0 && ay == 0.0) return 0.0;
+  const bool swapped = ay > ax;
+  double a = swapped ? detail::atan_unit(ax / ay) : detail::atan_unit(ay / ax);
+  if (swapped) a = kHalfPi - a;
+  if (x < 0) a = kPiValue - a;
+  return y < 0 ? -a : a;
+}
+
+}  // namespace plumb::estimators

@@ -1,0 +1,58 @@
+// Base of the windowed plugins (static, integral, compensated): cuts the stream into back-to-back
+// windows of `window` seconds (0: the whole stream until flush()), rejects and counts bad samples,
+// splits at gaps, and guarantees finite outputs. Subclasses only turn one window into an estimate.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "plumb/estimator/estimator.hpp"
+#include "plumb/estimators/parameter_reader.hpp"
+#include "plumb/estimators/window.hpp"
+
+namespace plumb::estimators {
+
+class WindowedEstimator : public estimator::Estimator {
+ public:
+  estimator::Info info() const final;
+  void configure(const estimator::Parameters& params) final;
+  void push(std::span<const Sample> samples, std::vector<Estimate>& out) final;
+  void flush(std::vector<Estimate>& out) final;
+  estimator::Counters counters() const final { return counters_; }
+
+  // Windows shorter than this many samples are reported invalid.
+  static constexpr std::size_t kMinSamples = 10;
+  // A spacing above this multiple of the nominal one is a gap: the window is closed there.
+  static constexpr double kGapFactor = 3.0;
+
+ protected:
+  WindowedEstimator();
+  // Name, description, version and the plugin's own parameters (the base adds `window`).
+  virtual estimator::Info describe() const = 0;
+  virtual void configure_plugin(const ParameterReader& params) = 0;
+  // One window (at least kMinSamples samples) to one estimate; the base fills the bookkeeping
+  // fields (estimator, times, samples_used, partial_window) afterwards.
+  virtual Estimate estimate_window(const WindowData& window) = 0;
+
+ private:
+  void accept(const Sample& s, std::vector<Estimate>& out);
+  bool usable(const Sample& s);
+  void close_window(bool partial, const std::string& note, std::vector<Estimate>& out);
+  void count(const std::string& what) { ++counters_[what]; }
+  void reset();
+
+  double window_s_ = 10;
+  WindowData window_;
+  std::optional<double> last_t_;
+  std::vector<double> first_spacings_;  // to learn the nominal spacing
+  double nominal_dt_ = 0;
+  estimator::Counters counters_;
+};
+
+// Replaces every non-finite number by 0 and marks the estimate invalid: the last line of defence
+// behind "never NaN in an output".
+void make_finite(Estimate& e);
+
+}  // namespace plumb::estimators

@@ -1,0 +1,151 @@
+#include "plumb/estimators/windowed_estimator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace plumb::estimators {
+
+namespace {
+
+std::string format(const char* fmt, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, fmt, value);
+  return text;
+}
+
+}  // namespace
+
+WindowedEstimator::WindowedEstimator() { window_.reserve(1024); }
+
+estimator::Info WindowedEstimator::info() const {
+  estimator::Info info = describe();
+  info.parameters.insert(info.parameters.begin(),
+                         {"window", "10", "window length in seconds, windows back to back; 0 = the whole stream until flush"});
+  return info;
+}
+
+void WindowedEstimator::configure(const estimator::Parameters& params) {
+  const estimator::Info spec = info();
+  ParameterReader reader(params, spec.parameters);
+  window_s_ = reader.number("window", 0.0, 1e7);
+  configure_plugin(reader);
+  reset();
+}
+
+void WindowedEstimator::reset() {
+  window_.clear();
+  last_t_.reset();
+  first_spacings_.clear();
+  nominal_dt_ = 0;
+  counters_.clear();
+}
+
+bool WindowedEstimator::usable(const Sample& s) {
+  if ((s.flags & (flags::kAccelSaturated | flags::kMagSaturated)) != 0) {
+    count("rejected_saturated");
+    return false;
+  }
+  if ((s.flags & flags::kOutOfRange) != 0) {
+    count("rejected_out_of_range");
+    return false;
+  }
+  if ((s.flags & flags::kNotFinite) != 0 || !std::isfinite(s.t) || !s.f.allFinite() || !s.b.allFinite()) {
+    count("rejected_non_finite");
+    return false;
+  }
+  if ((s.flags & flags::kTimeBackwards) != 0 || (last_t_ && s.t <= *last_t_)) {
+    count("rejected_time_backwards");
+    return false;
+  }
+  return true;
+}
+
+void WindowedEstimator::push(std::span<const Sample> samples, std::vector<Estimate>& out) {
+  for (const Sample& s : samples) accept(s, out);
+}
+
+void WindowedEstimator::accept(const Sample& s, std::vector<Estimate>& out) {
+  if (!usable(s)) return;
+  if (last_t_) {
+    const double dt = s.t - *last_t_;
+    const bool gap = (s.flags & flags::kGapBefore) != 0 || (nominal_dt_ > 0 && dt > kGapFactor * nominal_dt_);
+    if (gap) {
+      count("gaps");
+      close_window(true, "window cut short by a gap of " + format("%.3g", dt) + " s", out);
+      first_spacings_.clear();
+      nominal_dt_ = 0;
+    } else if (nominal_dt_ == 0) {
+      // The median of the first spacings: robust to one odd spacing at start-up.
+      first_spacings_.push_back(dt);
+      if (first_spacings_.size() == 9) {
+        auto copy = first_spacings_;
+        std::nth_element(copy.begin(), copy.begin() + 4, copy.end());
+        nominal_dt_ = copy[4];
+      }
+    }
+  }
+  if (window_s_ > 0 && !window_.empty() && s.t >= window_.t.front() + window_s_ * (1 - 1e-9)) {
+    close_window(false, {}, out);
+  }
+  last_t_ = s.t;
+  window_.t.push_back(s.t);
+  window_.gx.push_back(-s.f.x());
+  window_.gy.push_back(-s.f.y());
+  window_.gz.push_back(-s.f.z());
+  window_.bx.push_back(s.b.x());
+  window_.by.push_back(s.b.y());
+  window_.bz.push_back(s.b.z());
+  count("samples_accepted");
+}
+
+void WindowedEstimator::flush(std::vector<Estimate>& out) {
+  if (window_.empty()) return;
+  // A window that spans its full length (first sample to one spacing past the last) is complete.
+  const double dt = nominal_dt_ > 0 ? nominal_dt_ : 0.0;
+  const double covered = window_.t.back() - window_.t.front() + dt;
+  const bool partial = window_s_ > 0 && covered < window_s_ * (1 - 1e-6);
+  close_window(partial, {}, out);
+}
+
+void WindowedEstimator::close_window(bool partial, const std::string& note, std::vector<Estimate>& out) {
+  if (window_.empty()) return;
+  window_.nominal_dt = nominal_dt_;
+  Estimate e;
+  if (window_.size() < kMinSamples) {
+    e.reason = "too few samples in window (" + std::to_string(window_.size()) + ", need " +
+               std::to_string(kMinSamples) + ")";
+  } else {
+    e = estimate_window(window_);
+  }
+  e.estimator = describe().name;
+  e.t_start = window_.t.front();
+  e.t_end = window_.t.back();
+  e.samples_used = static_cast<std::uint32_t>(std::min<std::size_t>(e.samples_used ? e.samples_used : window_.size(),
+                                                                   window_.size()));
+  e.partial_window = partial;
+  if (!note.empty()) e.reason = e.reason.empty() ? note : e.reason + "; " + note;
+  make_finite(e);
+  if (!e.valid) count("invalid_windows");
+  count("windows");
+  out.push_back(std::move(e));
+  window_.clear();
+}
+
+void make_finite(Estimate& e) {
+  bool fixed = false;
+  for (double* v : {&e.t_start, &e.t_end, &e.inclination_deg, &e.azimuth_deg, &e.gravity_toolface_deg,
+                    &e.magnetic_toolface_deg, &e.rpm, &e.inclination_sd_deg, &e.azimuth_sd_deg, &e.toolface_sd_deg,
+                    &e.dip_deg, &e.total_g, &e.total_b}) {
+    if (!std::isfinite(*v)) {
+      *v = 0;
+      fixed = true;
+    }
+  }
+  if (fixed) {
+    e.valid = e.azimuth_valid = e.toolface_valid = false;
+    e.reason = e.reason.empty() ? "numerical failure (non-finite result)" : e.reason + "; numerical failure";
+  }
+}
+
+}  // namespace plumb::estimators

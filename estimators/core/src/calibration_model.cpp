@@ -1,0 +1,252 @@
+#include "plumb/core/calibration_model.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <istream>
+#include <map>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+#include <vector>
+
+namespace plumb {
+
+namespace {
+
+// The root of k2 a^2 + a - w = 0 that tends to w as k2 -> 0, written so that it does not lose
+// precision when k2 w is tiny (the usual case: k2 ~ 1e-5 per m/s^2).
+double solve_second_order(double w, double k2) {
+  if (k2 == 0.0) return w;
+  const double disc = 1.0 + 4.0 * k2 * w;
+  // Beyond the turning point of the quadratic there is no real inverse: the reading is outside
+  // what the model describes, so return the linear part rather than NaN.
+  if (!(disc > 0.0)) return w;
+  return 2.0 * w / (1.0 + std::sqrt(disc));
+}
+
+}  // namespace
+
+Eigen::Vector3d TriadModel::apply(const Eigen::Vector3d& raw, double dT) const {
+  const Eigen::Vector3d v = raw - (bias + bias_temp * dT);
+  const Eigen::Vector3d scale = Eigen::Vector3d::Ones() + scale_temp * dT;
+  const Eigen::Vector3d w = scale.asDiagonal() * (sensitivity * v);
+  Eigen::Vector3d a;
+  for (int i = 0; i < 3; ++i) a[i] = solve_second_order(w[i], second_order[i]);
+  return a;
+}
+
+bool TriadModel::is_identity() const {
+  return bias.isZero(0) && sensitivity == Eigen::Matrix3d::Identity() && second_order.isZero(0) &&
+         bias_temp.isZero(0) && scale_temp.isZero(0);
+}
+
+double CalibrationModel::corrected_temperature(double t) const {
+  return thermometer[0] + t * (thermometer[1] + t * (thermometer[2] + t * thermometer[3]));
+}
+
+void CalibrationModel::apply(Sample& s) const {
+  // Without a thermometer reading the temperature terms cannot be applied: calibrate at the
+  // reference temperature and leave temp_c alone.
+  double dT = 0.0;
+  if (s.flags & flags::kHasTemperature) {
+    const double T = corrected_temperature(s.temp_c);
+    s.temp_c = T;
+    dT = T - reference_temp_c;
+    if (!(T >= temp_min_c && T <= temp_max_c)) s.flags |= flags::kTemperatureOutOfRange;
+  }
+  s.f = accelerometer.apply(s.f, dT);
+  s.b = magnetometer.apply(s.b, dT);
+  s.flags |= flags::kCalibrated;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Coefficients file.
+
+namespace {
+
+constexpr std::string_view kFormatName = "plumb-calibration";
+constexpr int kFormatVersion = 1;
+
+void write_number(std::ostream& out, double x) {
+  // Shortest representation that reads back to the same double: exact round trip.
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x);
+  out.write(buf, r.ptr - buf);
+}
+
+template <typename Vec>
+void write_values(std::ostream& out, std::string_view key, const Vec& values) {
+  out << key;
+  for (double x : values) out << ' ', write_number(out, x);
+  out << '\n';
+}
+
+std::vector<double> as_vector(const Eigen::Vector3d& v) { return {v[0], v[1], v[2]}; }
+
+std::vector<double> row_major(const Eigen::Matrix3d& m) {
+  std::vector<double> out;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) out.push_back(m(r, c));
+  return out;
+}
+
+void write_triad(std::ostream& out, std::string_view prefix, const TriadModel& t) {
+  const std::string p(prefix);
+  write_values(out, p + ".bias", as_vector(t.bias));
+  write_values(out, p + ".sensitivity", row_major(t.sensitivity));
+  write_values(out, p + ".second_order", as_vector(t.second_order));
+  write_values(out, p + ".bias_temp", as_vector(t.bias_temp));
+  write_values(out, p + ".scale_temp", as_vector(t.scale_temp));
+}
+
+std::string trim(std::string_view s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string_view::npos) return {};
+  const auto e = s.find_last_not_of(" \t\r");
+  return std::string(s.substr(b, e - b + 1));
+}
+
+// Parses one line's values and reports problems with the file name and line number.
+class LineParser {
+ public:
+  LineParser(const std::string& source, int line_no, std::string key, std::string rest)
+      : source_(source), line_no_(line_no), key_(std::move(key)), rest_(std::move(rest)) {}
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw std::runtime_error(source_ + ":" + std::to_string(line_no_) + ": " + what);
+  }
+
+  std::vector<double> numbers(std::size_t expected) const {
+    std::vector<double> out;
+    std::istringstream in(rest_);
+    std::string token;
+    while (in >> token) {
+      double x = 0;
+      const char* first = token.data();
+      const char* last = first + token.size();
+      if (*first == '+') ++first;  // from_chars does not accept a leading '+'
+      const auto r = std::from_chars(first, last, x);
+      if (r.ec != std::errc() || r.ptr != last) fail("'" + key_ + "': '" + token + "' is not a number");
+      if (!std::isfinite(x)) fail("'" + key_ + "': value '" + token + "' is not finite");
+      out.push_back(x);
+    }
+    if (out.size() != expected)
+      fail("'" + key_ + "' needs " + std::to_string(expected) + " values, got " + std::to_string(out.size()));
+    return out;
+  }
+
+  Eigen::Vector3d vector3() const {
+    const auto v = numbers(3);
+    return {v[0], v[1], v[2]};
+  }
+
+  Eigen::Matrix3d matrix3() const {
+    const auto v = numbers(9);
+    Eigen::Matrix3d m;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) m(r, c) = v[static_cast<std::size_t>(3 * r + c)];
+    return m;
+  }
+
+  double number() const { return numbers(1)[0]; }
+  const std::string& text() const { return rest_; }
+
+ private:
+  const std::string& source_;
+  int line_no_;
+  std::string key_;
+  std::string rest_;
+};
+
+bool parse_triad_key(const std::string& key, const LineParser& p, const std::string& prefix, TriadModel& t) {
+  if (key.rfind(prefix + ".", 0) != 0) return false;
+  const std::string field = key.substr(prefix.size() + 1);
+  if (field == "bias") t.bias = p.vector3();
+  else if (field == "sensitivity") t.sensitivity = p.matrix3();
+  else if (field == "second_order") t.second_order = p.vector3();
+  else if (field == "bias_temp") t.bias_temp = p.vector3();
+  else if (field == "scale_temp") t.scale_temp = p.vector3();
+  else return false;
+  return true;
+}
+
+}  // namespace
+
+void write_calibration(std::ostream& out, const CalibrationModel& m) {
+  out << "# plumb calibration coefficients (docs/calibration.md)\n"
+      << "# per triad: v = u - (bias + bias_temp (T - T0)); w = diag(1 + scale_temp (T - T0)) S v;\n"
+      << "# a solves a + second_order .* a^2 = w; T = c0 + c1 t + c2 t^2 + c3 t^3 (thermometer)\n"
+      << "# sensitivity S is 9 values, row-major. accel.*: raw units -> m/s^2 specific force;\n"
+      << "# mag.*: raw units -> microtesla.\n";
+  out << "format " << kFormatName << ' ' << kFormatVersion << '\n';
+  out << "tool_id " << m.tool_id << '\n';
+  out << "calibration_id " << m.calibration_id << '\n';
+  write_values(out, "stamp_s", std::vector<double>{m.stamp_s});
+  write_values(out, "reference_temp_c", std::vector<double>{m.reference_temp_c});
+  write_values(out, "temp_range_c", std::vector<double>{m.temp_min_c, m.temp_max_c});
+  write_values(out, "thermometer", m.thermometer);
+  write_triad(out, "accel", m.accelerometer);
+  write_triad(out, "mag", m.magnetometer);
+}
+
+CalibrationModel parse_calibration(std::istream& in, const std::string& source) {
+  CalibrationModel m;
+  std::map<std::string, int> seen;  // key -> line where it was first given
+  std::string line;
+  int line_no = 0;
+  while (std::getline(in, line)) {
+    ++line_no;
+    const auto hash = line.find('#');
+    const std::string content = trim(std::string_view(line).substr(0, hash));
+    if (content.empty()) continue;
+    const auto space = content.find_first_of(" \t");
+    const std::string key = content.substr(0, space);
+    const std::string rest = space == std::string::npos ? std::string() : trim(content.substr(space));
+    const LineParser p(source, line_no, key, rest);
+    if (const auto [it, fresh] = seen.emplace(key, line_no); !fresh)
+      p.fail("'" + key + "' given twice (first on line " + std::to_string(it->second) + ")");
+
+    if (key == "format") {
+      std::istringstream words(rest);
+      std::string name, extra;
+      int version = 0;
+      if (!(words >> name >> version) || (words >> extra) || name != kFormatName)
+        p.fail("expected 'format " + std::string(kFormatName) + " " + std::to_string(kFormatVersion) + "'");
+      if (version != kFormatVersion)
+        p.fail("format version " + std::to_string(version) + " is not supported (this build reads " +
+               std::to_string(kFormatVersion) + ")");
+    } else if (key == "tool_id") {
+      m.tool_id = p.text();
+    } else if (key == "calibration_id") {
+      m.calibration_id = p.text();
+    } else if (key == "stamp_s") {
+      m.stamp_s = p.number();
+    } else if (key == "reference_temp_c") {
+      m.reference_temp_c = p.number();
+    } else if (key == "temp_range_c") {
+      const auto v = p.numbers(2);
+      if (!(v[0] < v[1])) p.fail("'temp_range_c' needs min < max");
+      m.temp_min_c = v[0];
+      m.temp_max_c = v[1];
+    } else if (key == "thermometer") {
+      const auto v = p.numbers(4);
+      for (std::size_t i = 0; i < 4; ++i) m.thermometer[i] = v[i];
+    } else if (!parse_triad_key(key, p, "accel", m.accelerometer) &&
+               !parse_triad_key(key, p, "mag", m.magnetometer)) {
+      p.fail("unknown key '" + key + "'");
+    }
+  }
+  if (in.bad()) throw std::runtime_error(source + ": read error");
+  if (seen.empty()) throw std::runtime_error(source + ": no calibration coefficients in the file");
+  return m;
+}
+
+CalibrationModel read_calibration_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot open calibration file");
+  return parse_calibration(in, path);
+}
+
+}  // namespace plumb

@@ -1,0 +1,93 @@
+// plumb-bench-estimators: throughput of each estimator plugin in samples per second on one core,
+// fed in 32-sample batches (the sensor topic's batch size) with 10 s windows at 100 Hz, and a
+// baseline measured in the same run: a plain loop that only sums every channel of the same
+// samples (the least any estimator must do). Goal (issue 3): >= 20 million samples/s for
+// compensated. Accepts Google Benchmark's flags (--help lists them).
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "plumb/estimator/loader.hpp"
+#include "plumb/sim/platform.hpp"
+
+namespace {
+
+const std::vector<plumb::Sample>& samples() {
+  static const std::vector<plumb::Sample> data = [] {
+    // 100 windows of the reference case turning at 120 rpm.
+    plumb::sim::Scenario s = plumb::sim::Scenario::reference(1.0, 40.0, 120.0, 20.0, 1);
+    s.duration_s = 1000;
+    plumb::sim::PlatformSimulator simulator(s);
+    return simulator.run();
+  }();
+  return data;
+}
+
+constexpr std::size_t kBatch = 32;
+
+void baseline_sum(benchmark::State& state) {
+  const auto& data = samples();
+  for (auto _ : state) {
+    double sum = 0;
+    for (const auto& s : data) sum += s.t + s.f.x() + s.f.y() + s.f.z() + s.b.x() + s.b.y() + s.b.z();
+    benchmark::DoNotOptimize(sum);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * data.size()));
+}
+
+void plugin(benchmark::State& state, const std::string& name) {
+  const auto& data = samples();
+  auto estimator = plumb::estimator::load_estimator(name);
+  std::vector<plumb::Estimate> out;
+  out.reserve(256);
+  for (auto _ : state) {
+    estimator->configure({{"window", "10"}});
+    out.clear();
+    for (std::size_t i = 0; i < data.size(); i += kBatch) {
+      estimator->push(std::span(data).subspan(i, std::min(kBatch, data.size() - i)), out);
+    }
+    estimator->flush(out);
+    benchmark::DoNotOptimize(out.data());
+  }
+  if (out.size() != 100 || !out.front().valid) state.SkipWithError("unexpected estimates");
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * data.size()));
+}
+
+// Keeps each benchmark's rate to print the ratio table after the usual report.
+class RateReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const auto& run : runs) {
+      auto it = run.counters.find("items_per_second");
+      if (it != run.counters.end() && !run.error_occurred) rates[run.benchmark_name()] = it->second;
+    }
+  }
+  std::map<std::string, double> rates;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RegisterBenchmark("baseline_sum", baseline_sum)->Unit(benchmark::kMillisecond);
+  for (const char* name : {"static", "integral", "compensated"}) {
+    benchmark::RegisterBenchmark((std::string("plugin/") + name).c_str(), plugin, std::string(name))
+        ->Unit(benchmark::kMillisecond);
+  }
+  RateReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  const double base = reporter.rates.count("baseline_sum") ? reporter.rates["baseline_sum"] : 0;
+  std::printf("\n%-24s %16s %18s %10s\n", "benchmark", "Msamples/s/core", "baseline/plugin", "goal");
+  for (const auto& [name, rate] : reporter.rates) {
+    const bool goal = name == "plugin/compensated";
+    std::printf("%-24s %16.2f %18.1f %10s\n", name.c_str(), rate / 1e6, rate > 0 ? base / rate : 0.0,
+                goal ? (rate >= 20e6 ? ">=20 ok" : ">=20 MISS") : "");
+  }
+  benchmark::Shutdown();
+  return 0;
+}

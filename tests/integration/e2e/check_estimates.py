@@ -1,0 +1,52 @@
+#!/usr/bin/env python3
+"""Checks attitude CSV rows printed by `plumb topic echo --csv` against the simulated truth.
+
+usage: check_estimates.py FILE --inclination I --azimuth A [--inc-tol D] [--azi-tol D] [--expect-invalid]
+The tolerances are the caller's physics budget (see e2e_estimation.sh)."""
+import argparse
+import csv
+import math
+import sys
+
+
+def angle_diff(a, b):
+    return (a - b + 180.0) % 360.0 - 180.0
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("file")
+    p.add_argument("--inclination", type=float, required=True)
+    p.add_argument("--azimuth", type=float, required=True)
+    p.add_argument("--inc-tol", type=float, default=0.1)
+    p.add_argument("--azi-tol", type=float, default=1.0)
+    p.add_argument("--expect-invalid", action="store_true")
+    p.add_argument("--min-rows", type=int, default=1)
+    a = p.parse_args()
+    with open(a.file, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if len(rows) < a.min_rows:
+        print(f"{a.file}: {len(rows)} estimates, expected at least {a.min_rows}")
+        return 1
+    bad = 0
+    for r in rows:
+        valid = int(r["flags"]) & 1
+        name = r["estimator"]
+        if a.expect_invalid:
+            if valid or not r["reason"]:
+                print(f"{name}: expected invalid with a reason, got flags={r['flags']} reason='{r['reason']}'")
+                bad += 1
+            continue
+        di = float(r["inclination_deg"]) - a.inclination
+        da = angle_diff(float(r["azimuth_deg"]), a.azimuth)
+        ok = valid and abs(di) <= a.inc_tol and abs(da) <= a.azi_tol and all(
+            math.isfinite(float(r[k])) for k in ("inclination_deg", "azimuth_deg", "rpm"))
+        print(f"{name}: inc {float(r['inclination_deg']):.4f} (err {di:+.4f}, tol {a.inc_tol}) "
+              f"azi {float(r['azimuth_deg']):.3f} (err {da:+.3f}, tol {a.azi_tol}) rpm {float(r['rpm']):.1f} "
+              f"{'ok' if ok else 'FAIL'}")
+        bad += not ok
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

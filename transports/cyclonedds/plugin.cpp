@@ -1,0 +1,30 @@
+// Entry point of libplumb_transport_cyclonedds.so: the Transport the loader asks for by name.
+#include <dds/version.h>
+
+#include "participant.hpp"
+#include "plumb/transport/loader.hpp"
+
+namespace plumb::transport::cyclonedds {
+
+namespace {
+
+class CycloneTransport final : public Transport {
+ public:
+  std::string name() const override { return "cyclonedds"; }
+  std::string vendor_version() const override { return std::string("Cyclone DDS ") + DDS_VERSION; }
+  std::unique_ptr<Participant> create_participant(const ParticipantOptions& options) override {
+    return make_participant(options);
+  }
+};
+
+Transport* create() { return new CycloneTransport(); }
+
+}  // namespace
+
+}  // namespace plumb::transport::cyclonedds
+
+extern "C" __attribute__((visibility("default"))) const plumb_transport_plugin_v1* plumb_transport_plugin() {
+  static const plumb_transport_plugin_v1 plugin{PLUMB_TRANSPORT_ABI_VERSION, "cyclonedds",
+                                                &plumb::transport::cyclonedds::create};
+  return &plugin;
+}
