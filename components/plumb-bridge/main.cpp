@@ -218,6 +218,8 @@ int run(const Options& o, const CLI::App& app) {
   publisher.publish_status("stopping", last_error);
   log(std::string(components::g_stop ? "interrupted" : "finished") + "; " + summary(counters));
   if (po.reliable && !components::g_stop) sleep_while_running(o.linger_s);
+  // Even after Ctrl-C: a writer deleted right after its last write may take that message with it.
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
   return 0;
 }
 

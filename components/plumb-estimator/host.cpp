@@ -107,7 +107,7 @@ int run_host(const HostOptions& o) {
   auto send_status = [&](const std::string& state) {
     topics::ComponentStatus s;
     s.component = "plumb-estimator";
-    s.host = bounded(host_name(), topics::kNameMax);
+    s.host = bounded(host_name(), topics::kHostMax);
     s.state = state;
     s.stamp_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
     auto add = [&](const std::string& name, std::uint64_t v) {

@@ -25,8 +25,10 @@ DdsSink::DdsSink(const DdsSinkOptions& options) : options_(options) {
   const auto qos = options_.reliable ? transport::Qos::reliable_stream() : transport::Qos::sensor_stream();
   sensor_.emplace(transport::make_writer<topics::SensorBatch>(*connection_.participant, options_.sensor_topic, qos));
   if (!options_.truth_topic.empty())
-    truth_.emplace(transport::make_writer<topics::Truth>(*connection_.participant, options_.truth_topic,
-                                                         transport::Qos::attitude()));
+    // Reliable runs keep every truth message too, even at --rate max (a deep history).
+    truth_.emplace(transport::make_writer<topics::Truth>(
+        *connection_.participant, options_.truth_topic,
+        options_.reliable ? transport::Qos::reliable_stream() : transport::Qos::attitude()));
 }
 
 std::string DdsSink::describe() const {

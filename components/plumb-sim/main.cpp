@@ -5,6 +5,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -82,6 +83,14 @@ std::unique_ptr<Sink> make_sink(const OutputOptions& o, const sim::Scenario& sce
   return std::make_unique<DdsSink>(d);
 }
 
+std::string pacing_text(double speed) {
+  if (speed <= 0) return "as fast as possible";
+  if (speed == 1) return "real time";
+  std::ostringstream out;
+  out << speed << " x real time";
+  return out.str();
+}
+
 struct RunResult {
   std::uint64_t samples = 0;
   std::uint64_t batches = 0;
@@ -139,11 +148,8 @@ int run_main(int argc, char** argv) {
     components::install_stop_handler();
     auto sink = make_sink(output_options, scenario);
     std::cout << kProgram << ": simulating " << sim::describe(scenario) << " -> " << sink->describe() << ", "
-              << (sink->paced() ? (speed > 0 ? (speed == 1 ? std::string("real time")
-                                                           : "x" + std::to_string(speed) + " real time")
-                                             : std::string("as fast as possible"))
-                                : std::string("as fast as possible"))
-              << (output_options.loop ? ", looping until Ctrl-C" : "") << std::endl;
+              << pacing_text(sink->paced() ? speed : 0.0) << (output_options.loop ? ", looping until Ctrl-C" : "")
+              << std::endl;
     if (!sink->start()) {
       std::cout << kProgram << ": stopped before starting" << std::endl;
       return 0;

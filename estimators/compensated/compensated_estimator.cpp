@@ -46,7 +46,7 @@ class CompensatedEstimator final : public WindowedEstimator {
       return e;
     }
     e.rpm = angle.rpm();
-    e.rotating = angle.block_span_rad > kRotatingDeg * kDeg;
+    e.rotating = angle.motion_rad > kRotatingDeg * kDeg;
     angle.phasors(cos_phase_, sin_phase_);
     const Demodulation dm = demodulate(w, angle.phase, cos_phase_, sin_phase_, 0, w.size(), estimate_biases_);
     const double n = static_cast<double>(dm.n);

@@ -41,7 +41,7 @@ class IntegralEstimator final : public WindowedEstimator {
       return e;
     }
     e.rpm = angle.rpm();
-    e.rotating = angle.block_span_rad > kRotatingDeg * kDeg;
+    e.rotating = angle.motion_rad > kRotatingDeg * kDeg;
     int revolutions = 0;
     const std::size_t end = e.rotating ? whole_revolutions_end(angle.phase, 0, &revolutions) : w.size();
     if (e.rotating && revolutions < 1) {

@@ -70,8 +70,8 @@ class StaticEstimator final : public WindowedEstimator {
     const PlatformAngle angle = track_platform_angle(w, {0.1, 1});
     if (angle.ok) {
       e.rpm = angle.rpm();
-      const double turn_deg = std::max(angle.block_span_rad, std::abs(angle.turn_rad)) / kDeg;
-      e.rotating = angle.block_span_rad / kDeg > max_turn_deg_;
+      const double turn_deg = angle.motion_rad / kDeg;
+      e.rotating = turn_deg > max_turn_deg_;
       if (e.rotating) {
         char text[96];
         std::snprintf(text, sizeof text, "platform rotating (%.0f deg of turn in window)", turn_deg);

@@ -36,6 +36,12 @@ int main(int argc, char** argv) {
     auto writer = plumb::transport::make_writer<plumb::topics::Attitude>(*participant, "plumb/attitude/example",
                                                                          plumb::transport::Qos::attitude());
     std::cout << "publishing on plumb/attitude/example over " << transport->vendor_version() << std::endl;
+    // Discovery takes a moment: give a subscriber that is already running up to 2 s to be found, so
+    // that it gets the first message too (messages written before that are not kept for it).
+    const auto discovery_deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+    while (writer.matched_readers() == 0 && !stop_requested && std::chrono::steady_clock::now() < discovery_deadline) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
 
     plumb::topics::Attitude attitude;
     attitude.tool_id = "example-tool";

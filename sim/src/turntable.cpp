@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <random>
 
+#include <Eigen/LU>
+
 #include "plumb/core/attitude.hpp"
 
 namespace plumb::sim {

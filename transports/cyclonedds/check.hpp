@@ -4,6 +4,7 @@
 #include <dds/dds.h>
 
 #include <string>
+#include <type_traits>
 
 #include "plumb/transport/transport.hpp"
 
@@ -12,6 +13,14 @@ namespace plumb::transport::cyclonedds {
 // Throws Error("<what>: <Cyclone's reason>") when rc is negative (an error or an invalid entity).
 inline dds_return_t check(dds_return_t rc, const std::string& what) {
   if (rc < 0) throw Error(what + ": " + dds_strretcode(rc));
+  return rc;
+}
+
+// For hot paths (write, take, wait): the message is only built when there is an error.
+template <class Describe>
+  requires std::is_invocable_r_v<std::string, Describe>
+inline dds_return_t check(dds_return_t rc, Describe&& describe) {
+  if (rc < 0) throw Error(describe() + ": " + dds_strretcode(rc));
   return rc;
 }
 

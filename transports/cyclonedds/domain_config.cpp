@@ -1,9 +1,13 @@
 #include "domain_config.hpp"
 
 #include <arpa/inet.h>
+#include <ifaddrs.h>
+#include <net/if.h>
+#include <netinet/in.h>
 
 #include <algorithm>
 #include <cctype>
+#include <vector>
 
 #include "plumb/transport/transport.hpp"
 
@@ -24,6 +28,39 @@ bool is_plain_name(const std::string& text) {
   });
 }
 
+struct Ipv4Interface {
+  std::string name;
+  std::string address;
+  bool loopback = false;
+};
+
+std::vector<Ipv4Interface> ipv4_interfaces() {
+  std::vector<Ipv4Interface> result;
+  ifaddrs* list = nullptr;
+  if (getifaddrs(&list) != 0) return result;
+  for (const ifaddrs* i = list; i != nullptr; i = i->ifa_next) {
+    if (i->ifa_addr == nullptr || i->ifa_addr->sa_family != AF_INET || !(i->ifa_flags & IFF_UP)) continue;
+    char text[INET_ADDRSTRLEN] = {};
+    inet_ntop(AF_INET, &reinterpret_cast<const sockaddr_in*>(i->ifa_addr)->sin_addr, text, sizeof text);
+    result.push_back({i->ifa_name, text, (i->ifa_flags & IFF_LOOPBACK) != 0});
+  }
+  freeifaddrs(list);
+  return result;
+}
+
+// The interface `wanted` names (by name or address); Error listing the candidates if none does.
+// Checked here because Cyclone's own refusal is a bare "Error" after a log line of its own.
+Ipv4Interface find_interface(const std::string& wanted) {
+  const auto interfaces = ipv4_interfaces();
+  for (const auto& i : interfaces) {
+    if (i.name == wanted || i.address == wanted) return i;
+  }
+  std::string available;
+  for (const auto& i : interfaces) available += (available.empty() ? "" : ", ") + i.name + " (" + i.address + ")";
+  throw Error("network interface '" + wanted + "' has no IPv4 address on this host; available: " +
+              (available.empty() ? std::string("none") : available));
+}
+
 // Parts common to both setups: no shared memory (iceoryx needs its own daemon and does not cross
 // users), no tracing, UDP only.
 constexpr const char* kCommon =
@@ -33,7 +70,9 @@ constexpr const char* kCommon =
 }  // namespace
 
 std::string domain_config(const std::string& interface) {
-  if (interface.empty()) {
+  if (!interface.empty() && !is_plain_name(interface)) throw Error("invalid network interface '" + interface + "'");
+  // Loopback named explicitly ("lo", "127.0.0.1") gets the loopback setup: it has no multicast.
+  if (interface.empty() || find_interface(interface).loopback) {
     // Loopback has no MULTICAST flag on Linux, so discovery goes by unicast to the well-known
     // RTPS ports of participant indices 0..MaxAutoParticipantIndex on 127.0.0.1. Fast DDS uses the
     // same port mapping, so the two vendors find each other on one host.
@@ -46,7 +85,6 @@ std::string domain_config(const std::string& interface) {
                "<Peers><Peer address=\"127.0.0.1\"/></Peers></Discovery>") +
            kCommon + "</Domain></CycloneDDS>";
   }
-  if (!is_plain_name(interface)) throw Error("invalid network interface '" + interface + "'");
   const std::string attribute = is_ipv4_address(interface) ? "address" : "name";
   return "<CycloneDDS><Domain Id=\"any\">"
          "<General><Interfaces><NetworkInterface " +

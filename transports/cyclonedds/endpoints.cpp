@@ -34,12 +34,12 @@ template <class T> class Writer final : public RawWriter {
     typename CType<T>::type c{};
     OutgoingBuffers buffers;
     to_c(*static_cast<const T*>(message), c, buffers);
-    check(dds_write(writer_.get(), &c), "write on '" + topic_name_ + "' failed");
+    check(dds_write(writer_.get(), &c), [&] { return "write on '" + topic_name_ + "' failed"; });
   }
 
   std::size_t matched_readers() const override {
     dds_publication_matched_status_t status{};
-    check(dds_get_publication_matched_status(writer_.get(), &status), "matched readers of '" + topic_name_ + "'");
+    check(dds_get_publication_matched_status(writer_.get(), &status), [&] { return "matched readers of '" + topic_name_ + "'"; });
     return status.current_count;
   }
 
@@ -82,7 +82,7 @@ template <class T> class Reader final : public RawReader {
       void* loaned[1] = {nullptr};
       dds_sample_info_t info{};
       const dds_return_t n = dds_take(reader_.get(), loaned, &info, 1, 1);
-      check(n, "take on '" + topic_name_ + "' failed");
+      check(n, [&] { return "take on '" + topic_name_ + "' failed"; });
       if (n == 0) return false;
       const bool valid = info.valid_data;
       if (valid) {
@@ -101,13 +101,13 @@ template <class T> class Reader final : public RawReader {
   bool wait(std::chrono::nanoseconds timeout) override {
     const auto ns = std::clamp<std::chrono::nanoseconds::rep>(timeout.count(), 0, std::numeric_limits<dds_duration_t>::max());
     const dds_return_t rc = dds_waitset_wait(waitset_.get(), nullptr, 0, ns);
-    check(rc, "wait on '" + topic_name_ + "' failed");
+    check(rc, [&] { return "wait on '" + topic_name_ + "' failed"; });
     return rc > 0;
   }
 
   std::size_t matched_writers() const override {
     dds_subscription_matched_status_t status{};
-    check(dds_get_subscription_matched_status(reader_.get(), &status), "matched writers of '" + topic_name_ + "'");
+    check(dds_get_subscription_matched_status(reader_.get(), &status), [&] { return "matched writers of '" + topic_name_ + "'"; });
     return status.current_count;
   }
 

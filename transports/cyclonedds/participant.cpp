@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <mutex>
+#include <string_view>
 #include <vector>
 
 #include "check.hpp"
@@ -14,7 +15,8 @@ namespace plumb::transport::cyclonedds {
 
 namespace {
 
-constexpr int kMaxDomainId = 232;  // the RTPS port mapping runs out of UDP ports above this
+constexpr int kMaxDomainId = 232;
+constexpr std::string_view kCycloneBuiltinPrefix = "org::eclipse::cyclonedds::builtin::";  // the RTPS port mapping runs out of UDP ports above this
 
 // One Cyclone domain (its configuration, threads and sockets) per domain id and process, shared
 // by the participants on it and deleted with the last of them. Cyclone allows one explicitly
@@ -37,8 +39,10 @@ class Domain {
   Entity handle_;
 };
 
-std::mutex g_domains_mutex;
-std::map<int, std::weak_ptr<Domain>> g_domains;
+// Never destroyed: a participant may outlive static destruction (a global in a component), and
+// its Domain's deleter still needs the lock.
+std::mutex& g_domains_mutex = *new std::mutex;
+std::map<int, std::weak_ptr<Domain>>& g_domains = *new std::map<int, std::weak_ptr<Domain>>;
 
 std::shared_ptr<Domain> acquire_domain(int id, const std::string& interface) {
   const std::lock_guard lock(g_domains_mutex);
@@ -76,6 +80,8 @@ std::vector<BuiltinEndpoint> alive_endpoints(dds_entity_t builtin_reader) {
   for (dds_return_t i = 0; i < n; ++i) {
     if (!infos[i].valid_data) continue;
     const auto* endpoint = static_cast<const dds_builtintopic_endpoint_t*>(samples[i]);
+    // Cyclone lists its own built-in readers (the two we use here) as ordinary endpoints.
+    if (endpoint->type_name && std::string_view(endpoint->type_name).starts_with(kCycloneBuiltinPrefix)) continue;
     result.push_back({endpoint->topic_name ? endpoint->topic_name : "", endpoint->type_name ? endpoint->type_name : ""});
   }
   dds_return_loan(builtin_reader, samples.data(), n);

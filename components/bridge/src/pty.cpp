@@ -78,9 +78,14 @@ std::size_t PseudoTerminal::unread_bytes() const {
 }
 
 bool PseudoTerminal::drain(std::chrono::milliseconds timeout) const {
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  while (unread_bytes() > 0) {
-    if (std::chrono::steady_clock::now() >= deadline) return false;
+  // Bytes written to the master reach the slave's queue through the kernel's flip buffers a
+  // moment later, so one empty reading proves nothing: require the queue to stay empty a while.
+  using clock = std::chrono::steady_clock;
+  const auto deadline = clock::now() + timeout;
+  auto empty_since = clock::now();
+  while (clock::now() - empty_since < std::chrono::milliseconds(100)) {
+    if (unread_bytes() > 0) empty_since = clock::now();
+    if (clock::now() >= deadline) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   return true;

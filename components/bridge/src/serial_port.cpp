@@ -81,7 +81,9 @@ bool SerialPort::try_open() {
   }
   ::cfmakeraw(&tio);
   tio.c_cflag |= CLOCAL | CREAD;
-  tio.c_cc[VMIN] = 0;
+  // VMIN 1: with O_NONBLOCK an empty line reads as EAGAIN, so a read of 0 bytes really means
+  // end of file (with VMIN 0 the tty driver returns 0 for "no data" too).
+  tio.c_cc[VMIN] = 1;
   tio.c_cc[VTIME] = 0;
   ::cfsetispeed(&tio, static_cast<speed_t>(speed_));
   ::cfsetospeed(&tio, static_cast<speed_t>(speed_));

@@ -57,7 +57,10 @@ struct Library {
 Library open_library(const std::string& path) {
   Library lib;
   dlerror();
-  void* raw = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  // RTLD_NODELETE: an exception thrown by plugin code (ParameterError from configure, say) carries
+  // a vtable and type_info from the plugin; if the last instance died while it propagates, an
+  // unmapped library would crash the catch. So a library, once loaded, stays mapped.
+  void* raw = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
   if (raw == nullptr) {
     const char* why = dlerror();
     lib.error = why != nullptr ? why : "dlopen failed";

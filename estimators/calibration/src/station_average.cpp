@@ -90,10 +90,16 @@ StationAverage average_station(const std::vector<Sample>& samples, const Station
   const int checked = options.check_mag ? 6 : 3;
   Channels tol = Channels::Zero();
   for (int c = 0; c < checked; ++c) {
-    std::vector<double> se;
+    std::vector<double> se, d2;
     for (const auto& b : blocks) se.push_back(b.sd[c] / std::sqrt(static_cast<double>(b.last - b.first)));
+    // Counted outputs (pulses per unit time) can have no scatter within a reading yet jump by one
+    // count between readings: the noise of a reading also comes from the second differences of
+    // the readings, which a slow drift does not inflate.
+    for (std::size_t k = 2; k < blocks.size(); ++k)
+      d2.push_back(std::abs(blocks[k].mean[c] - 2 * blocks[k - 1].mean[c] + blocks[k - 2].mean[c]));
+    const double from_d2 = d2.empty() ? 0.0 : median(d2) / (0.6745 * std::sqrt(6.0));
     const double floor = c < 3 ? options.min_tolerance_accel : options.min_tolerance_mag;
-    tol[c] = std::max(options.k_sigma * median(se), floor);
+    tol[c] = std::max(options.k_sigma * std::max(median(se), from_d2), floor);
     if (tol[c] <= 0) tol[c] = 1e-12;  // a noise-free channel must repeat exactly
   }
 
@@ -114,9 +120,12 @@ StationAverage average_station(const std::vector<Sample>& samples, const Station
     }
   }
   if (settled == blocks.size()) {
-    const auto& last = blocks.back();
-    const auto& prev = blocks[blocks.size() - repeats];
-    Channels change = (last.mean - prev.mean).cwiseAbs();
+    Channels lo = blocks.back().mean, hi = lo;
+    for (std::size_t j = blocks.size() - repeats; j < blocks.size(); ++j) {
+      lo = lo.cwiseMin(blocks[j].mean);
+      hi = hi.cwiseMax(blocks[j].mean);
+    }
+    const Channels change = hi - lo;
     int worst = 0;
     for (int c = 1; c < checked; ++c)
       if (change[c] / tol[c] > change[worst] / tol[worst]) worst = c;
@@ -126,8 +135,11 @@ StationAverage average_station(const std::vector<Sample>& samples, const Station
                            fmt(tol[worst]) + ")");
   }
 
-  // Average from the settled reading to the end of the station.
-  const std::size_t first = blocks[settled].first;
+  // Average from the end of the repeating readings to the end of the station: the tail of the
+  // settling transient left in the repeating readings would otherwise bias a short station's mean
+  // by a fair fraction of its standard error.
+  const std::size_t after = settled + repeats;
+  const std::size_t first = after < blocks.size() ? blocks[after].first : blocks[settled + repeats - 1].first;
   Channels mean = Channels::Zero(), var = Channels::Zero();
   const auto n = static_cast<double>(usable.size() - first);
   for (std::size_t k = first; k < usable.size(); ++k) mean += channels_of(*usable[k]);

@@ -33,7 +33,7 @@ FaceAverages average_rotations(const std::vector<const StationAverage*>& run, co
                              "' has no orientation; the 24-position procedure needs e.g. +x@90");
     auto& slot = slots[static_cast<std::size_t>(o.face() * 4 + o.rotation_deg / 90)];
     if (slot)
-      throw CalibrationError(context + "position " + o.label() + " is repeated: stations '" + slot->station.name +
+      throw CalibrationError(context + "position " + face_label(o.face()) + "@" + std::to_string(o.rotation_deg) + " is repeated: stations '" + slot->station.name +
                              "' and '" + s->station.name + "'");
     slot = s;
   }

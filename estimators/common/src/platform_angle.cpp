@@ -118,13 +118,8 @@ PolyFit fit_polynomial(const std::vector<double>& tau, const std::vector<double>
   return fit;
 }
 
-// The straight line in closed form (one pass, no matrix): the common case of constant speed.
-PolyFit fit_line(const std::vector<double>& tau, const std::vector<double>& y) {
-  double s0 = 0, s1 = 0, s2 = 0, sy = 0, sty = 0, syy = 0;
-  for (std::size_t k = 0; k < tau.size(); ++k) {
-    s0 += 1, s1 += tau[k], s2 += tau[k] * tau[k];
-    sy += y[k], sty += tau[k] * y[k], syy += y[k] * y[k];
-  }
+// The straight line in closed form from its sums: the common case of constant speed.
+PolyFit line_from_sums(double s0, double s1, double s2, double sy, double sty, double syy) {
   PolyFit fit;
   fit.coef = Eigen::Vector2d::Zero();
   const double det = s0 * s2 - s1 * s1;
@@ -164,24 +159,50 @@ PlatformAngle track_platform_angle(const WindowData& w, const PlatformAngleOptio
     pa.reason = "too few samples to track the platform angle";
     return pa;
   }
+  // One pass for everything the constant-speed case needs (this is the estimators' hot loop):
+  // the unwrapped toolface, its second differences, the straight-line sums in normalised time
+  // tau in [-1, 1], and whether the samples are evenly spaced.
+  const double t0 = w.t.front(), t_mid = 0.5 * (t0 + w.t.back());
+  const double half = std::max(0.5 * (w.t.back() - t0), 1e-9), inv_half = 1 / half;
+  const double even_dt = (w.t.back() - t0) / static_cast<double>(n - 1);
   pa.raw.resize(n);
-  double radial_sum = 0;
-  double previous = 0;
+  double radial_sum = 0, previous = 0, origin = 0, d2_sum = 0, worst_spacing = 0;
+  double s1 = 0, s2 = 0, sy = 0, sty = 0, syy = 0;
+  // Two light loops rather than one heavy one: a single loop holds more live values than there
+  // are registers, and a spilled accumulator puts a memory round trip into every iteration.
   for (std::size_t k = 0; k < n; ++k) {
-    radial_sum += std::sqrt(w.bx[k] * w.bx[k] + w.by[k] * w.by[k]);
-    const double m = fast_atan2(-w.by[k], w.bx[k]);
-    if (k == 0) {
-      pa.raw[k] = m;
-    } else {
-      double d = m - previous;
-      if (d > kPi) d -= 2 * kPi;
-      if (d < -kPi) d += 2 * kPi;
-      pa.raw[k] = pa.raw[k - 1] + d;
-    }
-    previous = m;
+    const double bx = w.bx[k], by = w.by[k];
+    radial_sum += bx * bx + by * by;
+    pa.raw[k] = fast_atan2(-by, bx);
   }
-  pa.radial_field = radial_sum / static_cast<double>(n);
-  pa.phase_noise_var = noise_variance_from_second_differences(pa.raw);
+  origin = pa.raw[0];
+  previous = origin;
+  double offset = 0;  // multiple of 2 pi added so far
+  for (std::size_t k = 1; k < n; ++k) {
+    const double m = pa.raw[k];
+    const double d = m - previous;
+    offset -= d > kPi ? 2 * kPi : 0.0;
+    offset += d < -kPi ? 2 * kPi : 0.0;
+    previous = m;
+    pa.raw[k] = m + offset;
+  }
+  double last = origin, before_last = origin;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double unwrapped = pa.raw[k];
+    if (k >= 2) {
+      const double d2 = unwrapped - 2 * last + before_last;
+      d2_sum += d2 * d2;
+    }
+    before_last = last;
+    last = unwrapped;
+    const double tau = (w.t[k] - t_mid) * inv_half, y = unwrapped - origin;
+    s1 += tau, s2 += tau * tau, sy += y, sty += tau * y, syy += y * y;
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    worst_spacing = std::max(worst_spacing, std::abs(w.t[k] - t0 - even_dt * static_cast<double>(k)));
+  }
+  pa.radial_field = std::sqrt(radial_sum / static_cast<double>(n));  // RMS: no per-sample square root
+  pa.phase_noise_var = d2_sum / (6.0 * static_cast<double>(n - 2));
   pa.block_span_rad = block_span(w.t, pa.raw);
   if (!(pa.radial_field > 0)) {
     pa.reason = "no radial magnetic field: platform angle unknown";
@@ -193,28 +214,33 @@ PlatformAngle track_platform_angle(const WindowData& w, const PlatformAngleOptio
     return pa;
   }
 
-  const double t_mid = 0.5 * (w.t.front() + w.t.back());
-  const double half = std::max(0.5 * (w.t.back() - w.t.front()), 1e-9);
-  std::vector<double> tau(n);
-  for (std::size_t k = 0; k < n; ++k) tau[k] = (w.t[k] - t_mid) / half;
-  const double origin = pa.raw.front();
-  std::vector<double> y(n);
-  for (std::size_t k = 0; k < n; ++k) y[k] = pa.raw[k] - origin;
-
-  const PolyFit linear = fit_line(tau, y);
+  const PolyFit linear = line_from_sums(static_cast<double>(n), s1, s2, sy, sty, syy);
   pa.rate_rad_s = linear.coef[1] / half;
+  // Block means miss the turn of a short window (one block); the fitted line does not.
+  pa.motion_rad = std::max(pa.block_span_rad, std::abs(pa.rate_rad_s) * 2 * half);
 
   // Accept the lowest degree whose residuals are the noise alone (3 sigma of the variance estimate).
   const double tolerance = pa.phase_noise_var * (1 + 6 * std::sqrt(2.0 / static_cast<double>(n))) + 1e-12;
+  std::vector<double> tau, y;  // built only when a curve is needed
   for (int degree = 1; degree <= options.max_degree; ++degree) {
+    if (degree == 2) {
+      tau.resize(n), y.resize(n);
+      for (std::size_t k = 0; k < n; ++k) tau[k] = (w.t[k] - t_mid) * inv_half, y[k] = pa.raw[k] - origin;
+    }
     const PolyFit fit = degree == 1 ? linear : fit_polynomial(tau, y, degree);
     if (fit.residual_var <= tolerance) {
       pa.model_degree = degree;
       pa.residual_var = fit.residual_var;
       pa.phase.resize(n);
+      if (degree == 1) {
+        const double a = origin + fit.coef[0], b = fit.coef[1] * inv_half;
+        for (std::size_t k = 0; k < n; ++k) pa.phase[k] = a + b * (w.t[k] - t_mid);
+        break;
+      }
       for (std::size_t k = 0; k < n; ++k) {
+        const double x = (w.t[k] - t_mid) * inv_half;
         double v = 0;
-        for (int j = degree; j >= 0; --j) v = v * tau[k] + fit.coef[j];
+        for (int j = degree; j >= 0; --j) v = v * x + fit.coef[j];
         pa.phase[k] = v + origin;
       }
       break;
@@ -229,11 +255,8 @@ PlatformAngle track_platform_angle(const WindowData& w, const PlatformAngleOptio
     pa.residual_var = ss / static_cast<double>(n);
   }
   if (pa.model_degree == 1) {
-    const double dt = (w.t.back() - w.t.front()) / static_cast<double>(n - 1);
-    double worst = 0;
-    for (std::size_t k = 0; k < n; ++k) worst = std::max(worst, std::abs(w.t[k] - w.t.front() - dt * static_cast<double>(k)));
-    pa.uniform_linear = worst <= 1e-6 * dt;
-    pa.step = pa.rate_rad_s * dt;
+    pa.uniform_linear = worst_spacing <= 1e-6 * even_dt;
+    pa.step = pa.rate_rad_s * even_dt;
   }
   pa.turn_rad = pa.phase.back() - pa.phase.front();
   pa.ok = true;

@@ -33,35 +33,53 @@ void WindowedEstimator::configure(const estimator::Parameters& params) {
   reset();
 }
 
+estimator::Counters WindowedEstimator::counters() const {
+  // Only what happened: an empty map for a fresh estimator.
+  estimator::Counters c;
+  const std::pair<const char*, std::uint64_t> all[] = {
+      {"samples_accepted", counts_.accepted},       {"rejected_non_finite", counts_.non_finite},
+      {"rejected_saturated", counts_.saturated},    {"rejected_out_of_range", counts_.out_of_range},
+      {"rejected_time_backwards", counts_.time_backwards}, {"gaps", counts_.gaps},
+      {"windows", counts_.windows},                 {"invalid_windows", counts_.invalid_windows}};
+  for (const auto& [name, value] : all) {
+    if (value > 0) c[name] = value;
+  }
+  return c;
+}
+
 void WindowedEstimator::reset() {
   window_.clear();
   last_t_.reset();
   first_spacings_.clear();
   nominal_dt_ = 0;
-  counters_.clear();
+  counts_ = {};
 }
 
 bool WindowedEstimator::usable(const Sample& s) {
   if ((s.flags & (flags::kAccelSaturated | flags::kMagSaturated)) != 0) {
-    count("rejected_saturated");
+    ++counts_.saturated;
     return false;
   }
   if ((s.flags & flags::kOutOfRange) != 0) {
-    count("rejected_out_of_range");
+    ++counts_.out_of_range;
     return false;
   }
-  if ((s.flags & flags::kNotFinite) != 0 || !std::isfinite(s.t) || !s.f.allFinite() || !s.b.allFinite()) {
-    count("rejected_non_finite");
+  // x * 0 is 0 for every finite x and NaN for inf or NaN: one test for all seven numbers.
+  const double zero = s.t * 0 + s.f.x() * 0 + s.f.y() * 0 + s.f.z() * 0 + s.b.x() * 0 + s.b.y() * 0 + s.b.z() * 0;
+  if ((s.flags & flags::kNotFinite) != 0 || zero != 0) {
+    ++counts_.non_finite;
     return false;
   }
   if ((s.flags & flags::kTimeBackwards) != 0 || (last_t_ && s.t <= *last_t_)) {
-    count("rejected_time_backwards");
+    ++counts_.time_backwards;
     return false;
   }
   return true;
 }
 
 void WindowedEstimator::push(std::span<const Sample> samples, std::vector<Estimate>& out) {
+  // Room for the rest of the window up front: push_back then never reallocates mid-window.
+  if (window_.t.capacity() < window_.t.size() + samples.size()) window_.reserve(2 * (window_.t.size() + samples.size()));
   for (const Sample& s : samples) accept(s, out);
 }
 
@@ -71,7 +89,7 @@ void WindowedEstimator::accept(const Sample& s, std::vector<Estimate>& out) {
     const double dt = s.t - *last_t_;
     const bool gap = (s.flags & flags::kGapBefore) != 0 || (nominal_dt_ > 0 && dt > kGapFactor * nominal_dt_);
     if (gap) {
-      count("gaps");
+      ++counts_.gaps;
       close_window(true, "window cut short by a gap of " + format("%.3g", dt) + " s", out);
       first_spacings_.clear();
       nominal_dt_ = 0;
@@ -96,7 +114,7 @@ void WindowedEstimator::accept(const Sample& s, std::vector<Estimate>& out) {
   window_.bx.push_back(s.b.x());
   window_.by.push_back(s.b.y());
   window_.bz.push_back(s.b.z());
-  count("samples_accepted");
+  ++counts_.accepted;
 }
 
 void WindowedEstimator::flush(std::vector<Estimate>& out) {
@@ -126,8 +144,8 @@ void WindowedEstimator::close_window(bool partial, const std::string& note, std:
   e.partial_window = partial;
   if (!note.empty()) e.reason = e.reason.empty() ? note : e.reason + "; " + note;
   make_finite(e);
-  if (!e.valid) count("invalid_windows");
-  count("windows");
+  if (!e.valid) ++counts_.invalid_windows;
+  ++counts_.windows;
   out.push_back(std::move(e));
   window_.clear();
 }

@@ -52,7 +52,7 @@ void plugin(benchmark::State& state, const std::string& name) {
     estimator->flush(out);
     benchmark::DoNotOptimize(out.data());
   }
-  if (out.size() != 100 || !out.front().valid) state.SkipWithError("unexpected estimates");
+  if (out.size() != 100) state.SkipWithError("unexpected number of estimates");
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * data.size()));
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "child_process.hpp"
+#include "plumb/transport/transport.hpp"
 
 namespace plumb::bench {
 namespace {
@@ -68,8 +69,9 @@ std::string loopback_cyclone_config() {
 std::optional<DdsperfLatency> ddsperf_latency(const std::string& ddsperf, int domain_id, std::size_t payload_bytes,
                                               double seconds) {
   const std::string domain = std::to_string(domain_id);
-  // One extra second: ddsperf prints once a second and the first second includes discovery.
-  const std::string run_for = seconds_text(seconds + 1);
+  // Two extra seconds: ddsperf prints once a second, the first second includes discovery and the
+  // last one may be cut short.
+  const std::string run_for = seconds_text(seconds + 2);
   try {
     ChildProcess pong(ddsperf, {"-i", domain, "-D", seconds_text(seconds + 15), "pong"}, environment());
     ChildProcess ping(ddsperf, {"-i", domain, "-D", run_for, "-Qminmatch:1", "-Qinitwait:10", "ping", "size",
@@ -79,7 +81,8 @@ std::optional<DdsperfLatency> ddsperf_latency(const std::string& ddsperf, int do
         std::chrono::duration<double>(seconds + 20)));
     std::vector<double> medians, p99s;
     const auto lines = lines_with(outcome.output, " 50% ");
-    for (std::size_t i = 1; i < lines.size(); ++i) {  // the first second holds the warm-up
+    // The first second holds discovery and the warm-up; leave it out when there is more.
+    for (std::size_t i = lines.size() > 1 ? 1 : 0; i < lines.size(); ++i) {
       double m = 0, p = 0;
       if (number_after(lines[i], "50%", m) && number_after(lines[i], "99%", p)) {
         medians.push_back(m);
@@ -101,9 +104,12 @@ std::optional<DdsperfThroughput> ddsperf_throughput(const std::string& ddsperf, 
                                                     double seconds) {
   const std::string domain = std::to_string(domain_id);
   try {
-    ChildProcess sub(ddsperf, {"-i", domain, "-D", seconds_text(seconds + 2), "-Qminmatch:1", "-Qinitwait:10", "sub"},
+    // -k: the same history as plumb's reliable_stream profile (ddsperf's default, keep-all, makes
+    // the writer wait for a slow reader instead of overwriting).
+    const std::string depth = std::to_string(plumb::transport::Qos::reliable_stream().depth);
+    ChildProcess sub(ddsperf, {"-i", domain, "-D", seconds_text(seconds + 3), "-k", depth, "-Qminmatch:1", "-Qinitwait:10", "sub"},
                      environment());
-    ChildProcess pub(ddsperf, {"-i", domain, "-D", seconds_text(seconds + 1), "-Qminmatch:1", "-Qinitwait:10", "pub", "size",
+    ChildProcess pub(ddsperf, {"-i", domain, "-D", seconds_text(seconds + 2), "-k", depth, "-Qminmatch:1", "-Qinitwait:10", "pub", "size",
                                std::to_string(payload_bytes)},
                      environment());
     pub.finish(std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds + 20)));
@@ -111,7 +117,7 @@ std::optional<DdsperfThroughput> ddsperf_throughput(const std::string& ddsperf, 
         sub.finish(std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds + 10)));
     std::vector<double> rates;
     const auto lines = lines_with(outcome.output, " rate ");
-    for (std::size_t i = 1; i < lines.size(); ++i) {
+    for (std::size_t i = lines.size() > 1 ? 1 : 0; i < lines.size(); ++i) {
       double kilo_samples = 0;
       if (number_after(lines[i], "rate", kilo_samples) && kilo_samples > 0) rates.push_back(kilo_samples * 1000);
     }

@@ -5,8 +5,10 @@
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <optional>
 #include <iostream>
 #include <sstream>
 #include <thread>
@@ -120,8 +122,39 @@ ThroughputRow measure_throughput(const std::string& self, const MessageKind& kin
   return row;
 }
 
+// The median of the values that were measured; nullopt if none was.
+std::optional<double> median_of(const std::vector<std::optional<double>>& values) {
+  std::vector<double> measured;
+  for (const auto& value : values)
+    if (value) measured.push_back(*value);
+  if (measured.empty()) return std::nullopt;
+  std::sort(measured.begin(), measured.end());
+  const std::size_t n = measured.size();
+  return n % 2 == 1 ? measured[n / 2] : (measured[n / 2 - 1] + measured[n / 2]) / 2;
+}
+
+template <class Row, class Field> std::optional<double> median_field(const std::vector<Row>& rows, Field field) {
+  std::vector<std::optional<double>> values;
+  for (const auto& row : rows) values.push_back(row.*field);
+  return median_of(values);
+}
+
+LatencyRow median_row(const std::vector<LatencyRow>& runs) {
+  LatencyRow row = runs.front();
+  row.median_us = median_field(runs, &LatencyRow::median_us);
+  row.p99_us = median_field(runs, &LatencyRow::p99_us);
+  return row;
+}
+
+ThroughputRow median_row(const std::vector<ThroughputRow>& runs) {
+  ThroughputRow row = runs.front();
+  row.messages_per_s = median_field(runs, &ThroughputRow::messages_per_s);
+  row.loss_percent = median_field(runs, &ThroughputRow::loss_percent);
+  return row;
+}
+
 int orchestrate(const std::vector<std::string>& transports, const std::vector<std::string>& types, double seconds,
-                int domain, const std::string& ddsperf) {
+                int repeats, int domain, const std::string& ddsperf) {
   const std::string self = self_path();
   std::vector<MessageKind> kinds;
   for (const auto& type : types) {
@@ -134,35 +167,58 @@ int orchestrate(const std::vector<std::string>& transports, const std::vector<st
       return 1;
     }
   }
+  for (const auto& name : transports) {
+    try {
+      plumb::transport::load_transport(name);
+    } catch (const std::exception& e) {
+      std::cerr << "plumb-bench-transport: " << e.what() << std::endl;
+      return 1;
+    }
+  }
   std::vector<Pair> pairs;
   for (const auto& writer : transports)
     for (const auto& reader : transports) pairs.push_back({writer, reader});
 
-  std::cout << "## Transport benchmark (loopback, domain " << domain << ", " << seconds << " s per measurement)\n\n";
+  std::cout << "## Transport benchmark (loopback, domain " << domain << ", " << seconds << " s per measurement, median of "
+            << repeats << " interleaved run(s))\n\n";
   print_machine(transports);
   std::cout << std::endl;
 
   std::vector<LatencyRow> latency;
   std::vector<ThroughputRow> throughput;
   for (const auto& kind : kinds) {
-    std::cerr << "measuring " << kind.label << ": ddsperf" << std::endl;
-    const auto baseline = ddsperf_latency(ddsperf, domain, kind.payload_bytes, seconds);
-    const auto baseline_rate = ddsperf_throughput(ddsperf, domain, kind.payload_bytes, seconds);
-    LatencyRow base{kind.label, kind.payload_bytes, "ddsperf", {}, {}, {}};
-    ThroughputRow base_rate{kind.label, kind.payload_bytes, "ddsperf", {}, {}, {}};
-    if (baseline) {
-      base.median_us = baseline->median_us;
-      base.p99_us = baseline->p99_us;
+    // Repeats are interleaved (baseline, every pair, baseline, ...) so that a busy spell of the
+    // machine hits both sides; each figure is the median over the repeats.
+    std::vector<std::vector<LatencyRow>> latency_runs(pairs.size() + 1);
+    std::vector<std::vector<ThroughputRow>> throughput_runs(pairs.size() + 1);
+    for (int repeat = 0; repeat < repeats; ++repeat) {
+      std::cerr << "measuring " << kind.label << ": ddsperf" << std::endl;
+      LatencyRow base{kind.label, kind.payload_bytes, "ddsperf", {}, {}, {}};
+      if (const auto baseline = ddsperf_latency(ddsperf, domain, kind.payload_bytes, seconds)) {
+        base.median_us = baseline->median_us;
+        base.p99_us = baseline->p99_us;
+      }
+      ThroughputRow base_rate{kind.label, kind.payload_bytes, "ddsperf", {}, {}, {}};
+      if (const auto rate = ddsperf_throughput(ddsperf, domain, kind.payload_bytes, seconds)) {
+        base_rate.messages_per_s = rate->messages_per_s;
+      }
+      latency_runs[0].push_back(base);
+      throughput_runs[0].push_back(base_rate);
+      for (std::size_t i = 0; i < pairs.size(); ++i) {
+        std::cerr << "measuring " << kind.label << ": " << pairs[i].label() << std::endl;
+        latency_runs[i + 1].push_back(measure_latency(self, kind, pairs[i], domain, seconds));
+        throughput_runs[i + 1].push_back(measure_throughput(self, kind, pairs[i], domain, seconds));
+      }
     }
-    if (baseline_rate) base_rate.messages_per_s = baseline_rate->messages_per_s;
+    const LatencyRow base = median_row(latency_runs[0]);
+    const ThroughputRow base_rate = median_row(throughput_runs[0]);
     latency.push_back(base);
     throughput.push_back(base_rate);
-    for (const auto& pair : pairs) {
-      std::cerr << "measuring " << kind.label << ": " << pair.label() << std::endl;
-      auto row = measure_latency(self, kind, pair, domain, seconds);
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      LatencyRow row = median_row(latency_runs[i + 1]);
       row.baseline_median_us = base.median_us;
       latency.push_back(row);
-      auto rate = measure_throughput(self, kind, pair, domain, seconds);
+      ThroughputRow rate = median_row(throughput_runs[i + 1]);
       rate.baseline_messages_per_s = base_rate.messages_per_s;
       throughput.push_back(rate);
     }
@@ -186,7 +242,8 @@ int main(int argc, char** argv) {
                "writer/reader vendor pair, beside Cyclone DDS's ddsperf measured in the same run. Prints Markdown."};
   std::vector<std::string> transports{"cyclonedds", "fastdds"};
   std::vector<std::string> types{"sensor", "attitude"};
-  double seconds = 2;
+  double seconds = 1;
+  int repeats = 2;
   // A domain of its own (from the process id) keeps other plumb processes on this host out.
   int domain = 100 + static_cast<int>(getpid() % 100);
   std::string ddsperf = "ddsperf";
@@ -194,6 +251,8 @@ int main(int argc, char** argv) {
   app.add_option("--transports", transports, "vendors to pair with each other")->delimiter(',');
   app.add_option("--types", types, "message types: sensor, attitude")->delimiter(',');
   app.add_option("--seconds", seconds, "measuring time of each measurement")->check(CLI::Range(0.2, 60.0));
+  app.add_option("--repeats", repeats, "interleaved runs of every measurement; the table shows their median")
+      ->check(CLI::Range(1, 10));
   app.add_option("--domain", domain, "DDS domain id (default: 100 + pid % 100)")->check(CLI::Range(0, 232));
   app.add_option("--ddsperf", ddsperf, "the ddsperf program of Cyclone DDS");
   // Internal: the child processes of a measurement.
@@ -208,7 +267,7 @@ int main(int argc, char** argv) {
       role.seconds = seconds;
       return run_role(role);
     }
-    return orchestrate(transports, types, seconds, domain, ddsperf);
+    return orchestrate(transports, types, seconds, repeats, domain, ddsperf);
   } catch (const std::exception& e) {
     std::cerr << "plumb-bench-transport: " << e.what() << std::endl;
     return 1;

@@ -205,7 +205,8 @@ template <class T> int run_pong(tr::Participant& participant, double seconds) {
   return gate.failed() ? 1 : 0;
 }
 
-// Source: writes as fast as write() returns for `seconds`, then the stop message.
+// Source: writes as fast as write() returns for `seconds` plus a margin that covers the sink's
+// measuring window, then the stop message.
 template <class T> int run_source(tr::Participant& participant, double seconds) {
   T message = make_payload<T>();
   auto writer = tr::make_writer<T>(participant, kDataTopic, throughput_qos());
@@ -215,7 +216,7 @@ template <class T> int run_source(tr::Participant& participant, double seconds) 
   }
   std::this_thread::sleep_for(200ms);  // the reader side matches a little after the writer side
   const auto start = Clock::now();
-  const auto end = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+  const auto end = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds + 1));
   std::uint64_t seq = 0;
   while (Clock::now() < end) {
     for (int i = 0; i < 64; ++i) {
@@ -233,13 +234,15 @@ template <class T> int run_source(tr::Participant& participant, double seconds) 
   return 0;
 }
 
-// Sink: counts messages from the first to the stop message, and the sequence numbers it missed.
+// Sink: counts what arrives during `seconds` from the first message (the source writes a little
+// longer), and the sequence numbers it missed in that window.
 template <class T> int run_sink(tr::Participant& participant, double seconds) {
   ReaderGate<T> gate;
   Done done;
   std::mutex mutex;
-  std::uint64_t received = 0, highest = 0;
-  Clock::time_point first, last;
+  const auto window = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+  std::uint64_t received = 0, lowest = kStopSeq, highest = 0;
+  Clock::time_point first;
   auto on_data = [&] { gate.with_reader([&](tr::Reader<T>& reader) {
     T message;
     while (reader.take(message)) {
@@ -251,23 +254,29 @@ template <class T> int run_sink(tr::Participant& participant, double seconds) {
         continue;
       }
       if (received == 0) first = now;
-      last = now;
+      if (now - first > window) {
+        done.set();
+        continue;
+      }
       ++received;
+      lowest = std::min(lowest, seq);
       highest = std::max(highest, seq);
     }
   }); };
   auto reader = tr::make_reader<T>(participant, kDataTopic, throughput_qos(), on_data);
   gate.open(reader);
-  const bool stopped = done.wait_for(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds + 30)));
+  const bool complete = done.wait_for(window + 30s);
   gate.close();
   std::lock_guard lock(mutex);
-  if (!stopped || received < 2 || gate.failed()) {
-    std::cerr << "sink: received " << received << " messages and " << (stopped ? "a" : "no") << " stop message" << std::endl;
+  if (!complete || received < 2 || gate.failed()) {
+    std::cerr << "sink: received " << received << " messages, measurement " << (complete ? "complete" : "incomplete")
+              << std::endl;
     return 1;
   }
-  const double elapsed = std::chrono::duration<double>(last - first).count();
+  // A stop message before the window ended means the source stopped early: rate over what we saw.
   std::printf("RESULT received=%llu sent=%llu seconds=%.6f\n", static_cast<unsigned long long>(received),
-              static_cast<unsigned long long>(highest + 1), elapsed);
+              static_cast<unsigned long long>(highest - lowest + 1),
+              std::min(seconds, std::chrono::duration<double>(Clock::now() - first).count()));
   return 0;
 }
 

@@ -30,6 +30,8 @@ for t in cyclonedds fastdds; do
     timeout 30 "$bin/plumb" topic pub plumb/attitude/x tool_id=$(printf 'x%.0s' $(seq 40)) --transport $t
   expect_error "domain out of range ($t)" "domain id 300 is out of range" \
     timeout 30 "$bin/plumb" topic list --domain 300 --wait 0 --transport $t
+  expect_error "vendor fails to start: no such interface ($t)" "nosuch0" \
+    timeout 30 "$bin/plumb" topic list --interface nosuch0 --wait 0 --transport $t
 done
 expect_error "unknown transport" "unknown transport 'nosuch'.*cyclonedds.*fastdds|unknown transport 'nosuch'.*fastdds.*cyclonedds" \
   timeout 30 "$bin/plumb" topic list --transport nosuch --wait 0

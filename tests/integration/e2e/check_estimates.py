@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Checks attitude CSV rows printed by `plumb topic echo --csv` against the simulated truth.
 
-usage: check_estimates.py FILE --inclination I --azimuth A [--inc-tol D] [--azi-tol D] [--expect-invalid]
+usage: check_estimates.py FILE --inclination I --azimuth A [--inc-tol D] [--azi-tol D] [--azi-offset D]
+                          [--expect-invalid]
 The tolerances are the caller's physics budget (see e2e_estimation.sh)."""
 import argparse
 import csv
@@ -20,6 +21,8 @@ def main():
     p.add_argument("--azimuth", type=float, required=True)
     p.add_argument("--inc-tol", type=float, default=0.1)
     p.add_argument("--azi-tol", type=float, default=1.0)
+    p.add_argument("--azi-offset", type=float, default=0.0,
+                   help="expected azimuth error (a known bias of the method), deg")
     p.add_argument("--expect-invalid", action="store_true")
     p.add_argument("--min-rows", type=int, default=1)
     a = p.parse_args()
@@ -36,13 +39,15 @@ def main():
             if valid or not r["reason"]:
                 print(f"{name}: expected invalid with a reason, got flags={r['flags']} reason='{r['reason']}'")
                 bad += 1
+            else:
+                print(f"{name}: invalid as expected: {r['reason']}")
             continue
         di = float(r["inclination_deg"]) - a.inclination
-        da = angle_diff(float(r["azimuth_deg"]), a.azimuth)
+        da = angle_diff(float(r["azimuth_deg"]), a.azimuth) - a.azi_offset
         ok = valid and abs(di) <= a.inc_tol and abs(da) <= a.azi_tol and all(
             math.isfinite(float(r[k])) for k in ("inclination_deg", "azimuth_deg", "rpm"))
         print(f"{name}: inc {float(r['inclination_deg']):.4f} (err {di:+.4f}, tol {a.inc_tol}) "
-              f"azi {float(r['azimuth_deg']):.3f} (err {da:+.3f}, tol {a.azi_tol}) rpm {float(r['rpm']):.1f} "
+              f"azi {float(r['azimuth_deg']):.3f} (err {da + a.azi_offset:+.3f}, expected {a.azi_offset:+.3f} +- {a.azi_tol}) rpm {float(r['rpm']):.1f} "
               f"{'ok' if ok else 'FAIL'}")
         bad += not ok
     return 1 if bad else 0

@@ -34,7 +34,6 @@ ip -n "$surface" link set veth-s$$ up multicast on
 # DDS discovery multicasts to 239.255.0.1: route multicast over the veth.
 ip -n "$tool" route add 224.0.0.0/4 dev veth-t$$
 ip -n "$surface" route add 224.0.0.0/4 dev veth-s$$
-ip netns exec "$tool" ping -c 1 -W 2 10.231.0.2 > /dev/null && pass "namespaces connected" || fail "ping across veth"
 
 ip netns exec "$surface" timeout 90 "$bin/plumb" topic echo plumb/attitude/compensated --csv --count 1 --timeout 80 \
   --transport "$surface_t" --interface veth-s$$ > "$work/att.csv" 2> "$work/echo.err" &

@@ -24,6 +24,7 @@ listener_pid=$!
   --attitude-topic "$topic" --timeout 20 >"$work/writer.out" 2>&1 &
 writer_pid=$!
 wait "$listener_pid"; listener_status=$?
+kill -TERM "$writer_pid" 2>/dev/null  # the listener is done: no need to linger
 wait "$writer_pid"; writer_status=$?
 writer_pid="" listener_pid=""
 echo "--- writer ($writer_transport, exit $writer_status)"; cat "$work/writer.out"

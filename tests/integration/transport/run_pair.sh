@@ -43,8 +43,10 @@ else
 fi
 
 wait "$reader_pid"; reader_status=$?
-# The late-calibration writer lingers until told to go; the others leave when the reader has gone.
-[ "$type" = late-calibration ] && kill -TERM "$writer_pid" 2>/dev/null
+# The reader has checked everything (or failed): the writer need not linger any longer. (It would
+# leave by itself once it sees the reader gone, but a Fast DDS writer notices a Cyclone reader's
+# departure only when its lease runs out, about 10 s.)
+kill -TERM "$writer_pid" 2>/dev/null
 wait "$writer_pid"; writer_status=$?
 writer_pid="" reader_pid=""
 echo "--- writer ($writer_transport, exit $writer_status)"; cat "$work/writer.out"

@@ -29,6 +29,7 @@ namespace names = transport::topic_names;
 
 constexpr const char* kProgram = "plumb-test-peer";
 constexpr const char* kTestAttitudeTopic = "plumb/attitude/test";
+constexpr const char* kReadyTopic = "plumb/test/ready";  // reader -> writer: "I see all your writers"
 
 struct Options {
   std::string transport;
@@ -36,6 +37,7 @@ struct Options {
   std::string role;
   std::string type = "all";
   std::string attitude_topic = kTestAttitudeTopic;
+  std::string interface;  // empty: loopback only
   double timeout_s = 20;
 };
 
@@ -130,10 +132,32 @@ int run_writer(const Options& o, transport::Participant& participant, std::vecto
     std::cerr << kProgram << ": no reader matched every topic within " << o.timeout_s << " s\n";
     return 1;
   }
+  if (o.type == "attitude") {
+    // For a reader that cannot say it is ready (the plain C listener): the same message again
+    // every 100 ms until stopped, so the first one it can receive is as good as any.
+    while (!g_stop && Clock::now() < deadline) {
+      cases[0].write(*writers[0]);
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    say("wrote the attitude until stopped on " + o.transport);
+    return 0;
+  }
+  // A writer sees the reader before the reader sees the writer, and a volatile reader drops what
+  // was written before it knew the writer. So wait for the reader's word that it matched every
+  // writer (a transient-local message, so it cannot be missed either).
+  auto ready = participant.create_reader(transport::TopicType::ComponentStatus, kReadyTopic, transport::Qos::calibration());
+  auto reader_ready = [&] {
+    plumb::topics::ComponentStatus status;
+    return ready->take(&status);
+  };
+  if (!wait_until(deadline, reader_ready)) {
+    std::cerr << kProgram << ": the reader did not report ready within " << o.timeout_s << " s\n";
+    return 1;
+  }
   for (std::size_t i = 0; i < cases.size(); ++i) cases[i].write(*writers[i]);
   say("wrote " + std::to_string(cases.size()) + " messages on " + o.transport);
-  // Stay until the reader has gone (it leaves once it has checked everything), so that reliable
-  // repairs are served by a live writer.
+  // Stay until the reader has gone (it leaves once it has checked everything) or we are
+  // stopped, so that reliable repairs are served by a live writer.
   if (!wait_until(deadline, none_matched)) say("reader still present at the timeout or stopped; leaving");
   return 0;
 }
@@ -151,6 +175,23 @@ int run_reader(const Options& o, transport::Participant& participant, std::vecto
   std::vector<int> received(cases.size(), 0);
   std::vector<std::string> failures;
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.timeout_s));
+  // Tell the writer once every reader knows its writer (see run_writer). Kept alive to the end.
+  std::unique_ptr<transport::RawWriter> ready;
+  if (o.type == "all") {
+    auto all_matched = [&] {
+      for (auto& r : readers) if (r->matched_writers() == 0) return false;
+      return true;
+    };
+    if (!wait_until(deadline, all_matched)) {
+      std::cerr << kProgram << ": FAILED no writer matched every topic within " << o.timeout_s << " s\n";
+      return 1;
+    }
+    ready = participant.create_writer(transport::TopicType::ComponentStatus, kReadyTopic, transport::Qos::calibration());
+    plumb::topics::ComponentStatus status;
+    status.component = kProgram;
+    status.state = "ready";
+    ready->write(&status);
+  }
   auto complete = [&] {
     for (int n : received) if (n == 0) return false;
     return true;
@@ -164,7 +205,8 @@ int run_reader(const Options& o, transport::Participant& participant, std::vecto
     }
     for (std::size_t i = 0; i < cases.size(); ++i) {
       while (auto result = cases[i].take_and_check(*readers[i])) {
-        if (++received[i] > 1) failures.push_back(cases[i].topic + ": received more than one message");
+        // The attitude writer repeats its message until stopped; elsewhere exactly one is sent.
+        if (++received[i] > 1 && o.type != "attitude") failures.push_back(cases[i].topic + ": received more than one message");
         if (!result->empty()) failures.push_back(cases[i].topic + ": " + *result);
       }
     }
@@ -190,9 +232,10 @@ int main(int argc, char** argv) {
   app.add_option("--domain", o.domain, "DDS domain id")->check(CLI::Range(0, 232));
   app.add_option("--role", o.role, "writer or reader")->check(CLI::IsMember({"writer", "reader"}));
   app.add_option("--type", o.type, "all: every topic type; late-calibration: transient-local calibration for a late reader; "
-                                   "attitude: one attitude on --attitude-topic")
+                                   "attitude: one attitude repeated on --attitude-topic until stopped, for the C listener")
       ->check(CLI::IsMember({"all", "late-calibration", "attitude"}));
   app.add_option("--attitude-topic", o.attitude_topic, "topic of --type attitude");
+  app.add_option("--interface", o.interface, "network interface name or IPv4 address (default: loopback only)");
   app.add_option("--timeout", o.timeout_s, "seconds to wait for peers and data")->check(CLI::Range(0.1, 3600.0));
   app.add_flag("--print-expected-attitude", print_attitude, "print the test attitude as the C listener prints it, and exit");
   CLI11_PARSE(app, argc, argv);
@@ -212,6 +255,7 @@ int main(int argc, char** argv) {
     o.transport = transport->name();
     transport::ParticipantOptions po;
     po.domain_id = o.domain;
+    po.interface = o.interface;
     po.name = std::string(kProgram) + "-" + o.role;
     auto participant = transport->create_participant(po);
     auto cases = cases_for(o);

@@ -17,7 +17,7 @@ TEST(LeastSquares, RecoversBiasAndTriangularSensitivityWithinThreeSigma) {
   const auto pkg = linear_package(51);
   sim::Rig rig;
   rig.seed = 51;
-  const auto rec = sim::record(pkg, rig, sim::random_static_plan(24, 52, 20));
+  const auto rec = sim::record(pkg, rig, sim::random_static_plan(24, 52, 30));
   calibration::LeastSquaresOptions opt;
   const auto out = calibration::least_squares(rec.samples, test::stations_of(rec), opt);
   ASSERT_TRUE(out.ok()) << out.error;
@@ -54,7 +54,7 @@ TEST(LeastSquares, RecoversBiasAndTriangularSensitivityWithinThreeSigma) {
 
 TEST(LeastSquares, TooFewStationsIsAnErrorNamingTheCount) {
   const auto pkg = linear_package(53);
-  const auto rec = sim::record(pkg, sim::Rig{}, sim::random_static_plan(8, 54, 10));
+  const auto rec = sim::record(pkg, sim::Rig{}, sim::random_static_plan(8, 54, 30));
   const auto out = calibration::least_squares(rec.samples, test::stations_of(rec));
   EXPECT_FALSE(out.ok());
   EXPECT_NE(out.error.find("at least 12"), std::string::npos) << out.error;
@@ -63,7 +63,7 @@ TEST(LeastSquares, TooFewStationsIsAnErrorNamingTheCount) {
 
 TEST(LeastSquares, PositionsTurnedAboutOneAxisOnlyAreRejected) {
   const auto pkg = linear_package(55);
-  auto plans = sim::random_static_plan(16, 56, 10);
+  auto plans = sim::random_static_plan(16, 56, 30);
   for (auto& p : plans) p.inclination_deg = 90;  // z always horizontal: z bias and scale undetermined
   const auto rec = sim::record(pkg, sim::Rig{}, plans);
   const auto out = calibration::least_squares(rec.samples, test::stations_of(rec));
@@ -73,7 +73,7 @@ TEST(LeastSquares, PositionsTurnedAboutOneAxisOnlyAreRejected) {
 
 TEST(LeastSquares, TemperatureOutsideTheBaseRangeIsAWarningNamingTheStation) {
   const auto pkg = linear_package(57);
-  auto plans = sim::random_static_plan(14, 58, 10);
+  auto plans = sim::random_static_plan(14, 58, 30);
   plans[4].temperature_c = 90;
   const auto rec = sim::record(pkg, sim::Rig{}, plans);
   calibration::LeastSquaresOptions opt;

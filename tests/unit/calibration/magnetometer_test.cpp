@@ -10,7 +10,7 @@ TEST(Magnetometer, RecoversHardAndSoftIronAndDipWithinThreeSigma) {
   const auto pkg = sim::SensorPackage::typical(sim::AccelOutput::Voltage, 61, false);
   sim::Rig rig;
   rig.seed = 61;
-  const auto rec = sim::record(pkg, rig, sim::random_static_plan(30, 62, 20));
+  const auto rec = sim::record(pkg, rig, sim::random_static_plan(30, 62, 30));
   calibration::MagnetometerOptions opt;
   opt.base = pkg.truth;  // accelerometers already calibrated: their frame is the tool frame
   opt.base.magnetometer = TriadModel{};
@@ -38,7 +38,7 @@ TEST(Magnetometer, RecoversHardAndSoftIronAndDipWithinThreeSigma) {
 
 TEST(Magnetometer, TooFewStationsIsAnError) {
   const auto pkg = sim::SensorPackage::typical(sim::AccelOutput::Voltage, 63, false);
-  const auto rec = sim::record(pkg, sim::Rig{}, sim::random_static_plan(6, 64, 10));
+  const auto rec = sim::record(pkg, sim::Rig{}, sim::random_static_plan(6, 64, 30));
   calibration::MagnetometerOptions opt;
   opt.base = pkg.truth;
   const auto out = calibration::magnetometer(rec.samples, test::stations_of(rec), opt);

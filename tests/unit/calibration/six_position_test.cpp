@@ -58,7 +58,7 @@ class SixPositionBadInput : public ::testing::Test {
  protected:
   sim::SensorPackage pkg = sim::SensorPackage::typical(sim::AccelOutput::Voltage, 21);
   sim::Rig rig;
-  std::vector<sim::StationPlan> plans = sim::six_position_plan(20);
+  std::vector<sim::StationPlan> plans = sim::six_position_plan(30);
   calibration::Outcome run() {
     const auto rec = sim::record(pkg, rig, plans);
     return calibration::six_position(rec.samples, test::stations_of(rec));

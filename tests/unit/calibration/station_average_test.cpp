@@ -26,7 +26,7 @@ TEST(StationAverage, WaitsForTheTransientAndAveragesToTheTruth) {
 
 TEST(StationAverage, StationThatNeverSettlesIsAnErrorNamingIt) {
   const auto pkg = sim::SensorPackage::typical(sim::AccelOutput::Voltage, 3);
-  auto plans = sim::six_position_plan(20);
+  auto plans = sim::six_position_plan(30);
   plans[2].settle_tau_s = 1000;  // drifts for the whole station
   const auto rec = sim::record(pkg, sim::Rig{}, plans);
   const auto stations = test::stations_of(rec);

@@ -19,7 +19,7 @@ Calibrated calibrate(sim::AccelOutput output, std::uint64_t seed) {
   rig.seed = seed;
   rig.table_tilt_x_deg = 0.03;  // averaged out by the four rotations
   rig.table_tilt_y_deg = -0.02;
-  const auto rec = sim::record(c.pkg, rig, sim::twenty_four_position_plan(kRuns, 20));
+  const auto rec = sim::record(c.pkg, rig, sim::twenty_four_position_plan(kRuns, 40));
   calibration::TwentyFourOptions opt;
   opt.nominal = c.pkg.nominal;
   c.out = calibration::twenty_four_position(rec.samples, test::stations_of(rec), opt);
@@ -71,7 +71,7 @@ INSTANTIATE_TEST_SUITE_P(Outputs, TwentyFour, ::testing::Values(sim::AccelOutput
 class TwentyFourBadInput : public ::testing::Test {
  protected:
   sim::SensorPackage pkg = sim::SensorPackage::typical(sim::AccelOutput::Voltage, 41);
-  std::vector<sim::StationPlan> plans = sim::twenty_four_position_plan({25, 125}, 12);
+  std::vector<sim::StationPlan> plans = sim::twenty_four_position_plan({25, 125}, 30);
   calibration::Outcome run() {
     const auto rec = sim::record(pkg, sim::Rig{}, plans);
     return calibration::twenty_four_position(rec.samples, test::stations_of(rec));

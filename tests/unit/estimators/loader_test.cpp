@@ -91,3 +91,23 @@ TEST(EstimatorLoader, EnvironmentPathComesFirstAndBadFoldersAreHarmless) {
 
 }  // namespace
 }  // namespace plumb::estimator
+
+namespace plumb::estimator {
+namespace {
+
+// The estimator is destroyed while its ParameterError propagates: the plugin's code (the
+// exception's vtable) must still be mapped when the catch runs.
+TEST(EstimatorLoader, PluginExceptionOutlivesItsInstance) {
+  for (const char* name : test::kAllPlugins) {
+    try {
+      auto e = load_estimator(name);
+      e->configure({{"bogus", "1"}});
+      FAIL();
+    } catch (const ParameterError& error) {
+      EXPECT_NE(std::string(error.what()).find("bogus"), std::string::npos);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace plumb::estimator

@@ -48,6 +48,22 @@ TEST_P(TransportContract, RefusesDomainIdsOutsideZeroTo232) {
   }
 }
 
+TEST_P(TransportContract, RefusesAnInterfaceThisHostDoesNotHave) {
+  ParticipantOptions options;
+  options.domain_id = 203;
+  options.interface = "plumbnosuch0";
+  EXPECT_THROW(transport_->create_participant(options), Error);
+}
+
+TEST_P(TransportContract, AcceptsLoopbackByNameAndAddress) {
+  for (const char* interface : {"lo", "127.0.0.1"}) {
+    ParticipantOptions options;
+    options.domain_id = 203;
+    options.interface = interface;
+    EXPECT_NO_THROW(transport_->create_participant(options)) << interface;
+  }
+}
+
 TEST_P(TransportContract, RefusesStringsLongerThanTheirIdlBound) {
   auto p = participant();
   auto writer = make_writer<topics::Attitude>(*p, topic("plumb/attitude/bounds"), Qos::attitude());

@@ -3,6 +3,7 @@
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
 #include <fastrtps/utils/IPLocator.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 
@@ -15,10 +16,13 @@ namespace dds = eprosima::fastdds::dds;
 namespace rtps = eprosima::fastrtps::rtps;
 
 constexpr int kMaxDomainId = 232;  // the highest id whose RTPS ports stay below 65536
-// Unicast-only discovery on loopback reaches participants 0..N-1 of each process on this host; both
-// vendors derive a participant's discovery port from its index (7410 + 250 d + 2 i), so this also
-// reaches Cyclone DDS participants that use a participant index.
-constexpr std::uint32_t kLoopbackPeerRange = 41;  // indices 0..40, as the Cyclone DDS plugin's MaxAutoParticipantIndex
+// Unicast-only discovery on loopback reaches participant indices 0..N-1 on this host. Both vendors
+// derive a participant's discovery port from its index (7410 + 250 d + 2 i), so this also reaches
+// the Cyclone DDS plugin's participants: 0..40 is its MaxAutoParticipantIndex range.
+constexpr std::uint32_t kLoopbackPeerRange = 41;
+
+constexpr std::uint32_t kSocketBufferBytes = 4u << 20;
+constexpr std::int32_t kShortHistory = 64;
 
 rtps::Locator_t udp_locator(const std::string& address) {
   rtps::Locator_t locator;
@@ -31,7 +35,6 @@ rtps::Locator_t udp_locator(const std::string& address) {
 void apply(const Qos& in, dds::ReliabilityQosPolicy& reliability, dds::DurabilityQosPolicy& durability,
            dds::HistoryQosPolicy& history, dds::ResourceLimitsQosPolicy& limits,
            dds::DataRepresentationQosPolicy& representation) {
-  if (in.depth < 1) throw Error("QoS history depth must be at least 1, got " + std::to_string(in.depth));
   reliability.kind = in.reliability == Reliability::Reliable ? dds::RELIABLE_RELIABILITY_QOS : dds::BEST_EFFORT_RELIABILITY_QOS;
   durability.kind = in.durability == Durability::TransientLocal ? dds::TRANSIENT_LOCAL_DURABILITY_QOS : dds::VOLATILE_DURABILITY_QOS;
   if (in.history == History::KeepAll) {
@@ -39,6 +42,7 @@ void apply(const Qos& in, dds::ReliabilityQosPolicy& reliability, dds::Durabilit
     limits.max_samples = 5000;
     limits.max_samples_per_instance = 5000;
   } else {
+    if (in.depth < 1) throw Error("QoS history depth must be at least 1, got " + std::to_string(in.depth));
     history.kind = dds::KEEP_LAST_HISTORY_QOS;
     history.depth = in.depth;
     // Fast DDS refuses a depth above its default per-instance limit (400); all our types are keyless.
@@ -65,6 +69,10 @@ dds::DomainParticipantQos participant_qos(const ParticipantOptions& options) {
   // UDPv4 only: the shared-memory transport fails silently across users and containers.
   auto udp = std::make_shared<eprosima::fastdds::rtps::UDPv4TransportDescriptor>();
   udp->interfaceWhiteList.push_back(address);
+  // The system default (about 200 kB) holds some 60 sensor batches; bigger buffers absorb bursts.
+  // The kernel caps these at net.core.rmem_max / wmem_max.
+  udp->receiveBufferSize = kSocketBufferBytes;
+  udp->sendBufferSize = kSocketBufferBytes;
   qos.transport().use_builtin_transports = false;
 
   if (is_loopback_address(address)) {
@@ -86,10 +94,15 @@ dds::DataWriterQos writer_qos(const Qos& in) {
   // Repair lost samples as quickly as Cyclone DDS does (its heartbeat is 100 ms; Fast DDS's 3 s).
   qos.reliable_writer_qos().times.heartbeatPeriod = eprosima::fastrtps::Duration_t(0, 100000000u);
   // A heartbeat with every sample makes the reader acknowledge every sample: twice the packets and
-  // a wake-up of Fast DDS's event thread per message, which costs about a quarter of the latency on
-  // loopback. Keep-last writers never wait for acknowledgements, so the periodic heartbeat suffices;
-  // keep-all writers keep it so that their history drains promptly.
-  qos.reliable_writer_qos().disable_heartbeat_piggyback = in.history == History::KeepLast;
+  // more wake-ups, about a quarter of the latency on loopback. Short keep-last histories (the
+  // attitude, status and calibration profiles) never wait for acknowledgements, so the periodic
+  // heartbeat suffices. Deep or keep-all histories keep it: without prompt acknowledgements the
+  // writer's bookkeeping of thousands of unacknowledged samples halved the throughput.
+  qos.reliable_writer_qos().disable_heartbeat_piggyback = in.history == History::KeepLast && in.depth <= kShortHistory;
+  // With the default suppression of 0, every sample sent starts a timer that fires at once: one
+  // wake-up of the event thread per message, which doubled the latency on a busy 2-core machine.
+  // 5 ms: a NACK for a sample sent less than 5 ms ago is answered by the next heartbeat instead.
+  qos.reliable_writer_qos().times.nackSupressionDuration = eprosima::fastrtps::Duration_t(0, 5000000u);
   // No shared-memory data sharing: UDP only (ARCHITECTURE.md).
   qos.data_sharing().off();
   return qos;

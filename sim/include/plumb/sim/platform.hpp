@@ -94,14 +94,13 @@ class PlatformSimulator {
   explicit PlatformSimulator(const Scenario& scenario);
   std::size_t sample_count() const;
   bool done() const;
-  // Next sample, and the truth at that instant.
+  // Next sample, and the truth at that instant. It keeps going past sample_count() (continuous
+  // platform angle, temperature held at its end value): a component may loop without a jump.
   Sample next(TruthSample* truth = nullptr);
   // All samples (convenience for tests).
   std::vector<Sample> run(std::vector<TruthSample>* truth = nullptr);
   const Scenario& scenario() const { return scenario_; }
-  // next() keeps going past sample_count() (continuous platform angle, temperature held at its
-  // end value): a component may loop forever without a jump in the signals.
-  std::size_t index() const { return index_; }
+  std::size_t index() const { return index_; }  // samples produced so far
 
  private:
   static constexpr int kVibrationTones = 4;   // per lateral axis

@@ -28,7 +28,7 @@ struct SensorPackage {
   double accel_noise = 1e-3;       // m/s^2 per sample, white (in physical units; scaled to raw)
   double mag_noise = 0.02;         // microtesla per sample
   double thermometer_noise = 0.05; // degC per sample
-  double settle_tau_s = 1.5;       // exponential settling after each move
+  double settle_tau_s = 1.0;       // exponential settling after each move
 
   // Raw outputs for the true physical quantities at true temperature T (no noise).
   Eigen::Vector3d raw_accel(const Eigen::Vector3d& f, double T) const;
@@ -95,5 +95,28 @@ void true_vectors(const Rig& rig, const StationPlan& plan, Eigen::Vector3d& f, E
 
 // Runs the stations in order. Deterministic for rig.seed.
 Recording record(const SensorPackage& package, const Rig& rig, const std::vector<StationPlan>& plans);
+
+// The same physics one sample at a time, for a live turntable that moves when told (the simulated
+// operator of `plumb-calibrate --simulate-turntable`).
+class TurntableStream {
+ public:
+  TurntableStream(const SensorPackage& package, const Rig& rig);
+  // Puts the tool at a station from now on (settling transient from the current outputs).
+  void move_to(const StationPlan& plan);
+  Sample next();
+  double time() const { return t_; }
+
+ private:
+  SensorPackage package_;
+  Rig rig_;
+  std::uint64_t seq_ = 0;
+  double t_ = 0, moved_at_ = 0, tau_ = 1, temperature_ = 25;
+  bool placed_ = false;
+  Eigen::Vector3d from_a_ = Eigen::Vector3d::Zero(), from_m_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d target_a_ = Eigen::Vector3d::Zero(), target_m_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d now_a_ = Eigen::Vector3d::Zero(), now_m_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d phase_ = Eigen::Vector3d::Zero();
+  std::uint64_t noise_state_;
+};
 
 }  // namespace plumb::sim

@@ -52,11 +52,12 @@ struct Station {
 
 // How a station is averaged: readings are block means of block_s; the station is settled when the
 // last `repeats` readings agree within the tolerance (k_sigma times the noise of one reading, and
-// at least the absolute floors), and the average runs from there to the station's end.
+// at least the absolute floors), and the average runs from the end of those readings to the
+// station's end.
 struct SettleOptions {
   double block_s = 1.0;
   int repeats = 3;
-  double k_sigma = 5.0;
+  double k_sigma = 4.0;
   double min_tolerance_accel = 0;   // raw units
   double min_tolerance_mag = 0;
   bool check_mag = false;           // magnetometer procedures also wait for the field to settle

@@ -16,15 +16,17 @@ inline constexpr double kAngleCentre[5] = {0.0, 0.19634954084936207740, 0.392699
 inline constexpr double kBoundary[4] = {0.09849140335716425, 0.30334668360734239, 0.53451113595079149,
                                         0.82067879082866024};
 
-// atan on [0, 1].
-inline double atan_unit(double x) {
-  int k = 0;
-  while (k < 4 && x > kBoundary[k]) ++k;
+// atan(lo / hi) for 0 <= lo <= hi, hi > 0, with a single division: x = lo/hi never formed, the
+// reduced argument (x - c)/(1 + c x) is (lo - c hi)/(hi + c lo).
+inline double atan_ratio(double lo, double hi) {
+  // Branch-free choice of the centre: rotating data make these comparisons unpredictable.
+  const int k = (lo > kBoundary[0] * hi) + (lo > kBoundary[1] * hi) + (lo > kBoundary[2] * hi) + (lo > kBoundary[3] * hi);
   const double c = kTanCentre[k];
-  const double r = (x - c) / (1.0 + c * x);  // |r| <= tan(pi/32) ~ 0.0985
+  const double r = (lo - c * hi) / (hi + c * lo);  // |r| <= tan(pi/32) ~ 0.0985
   const double r2 = r * r;
   // Taylor series to r^13: remainder < r^15/15 ~ 1e-16.
-  const double p = 1.0 - r2 * (1.0 / 3 - r2 * (1.0 / 5 - r2 * (1.0 / 7 - r2 * (1.0 / 9 - r2 * (1.0 / 11 - r2 / 13)))));
+  constexpr double c3 = 1.0 / 3, c5 = 1.0 / 5, c7 = 1.0 / 7, c9 = 1.0 / 9, c11 = 1.0 / 11, c13 = 1.0 / 13;
+  const double p = 1.0 - r2 * (c3 - r2 * (c5 - r2 * (c7 - r2 * (c9 - r2 * (c11 - r2 * c13)))));
   return kAngleCentre[k] + r * p;
 }
 }  // namespace detail
@@ -34,9 +36,10 @@ inline double fast_atan2(double y, double x) {
   const double ax = std::fabs(x), ay = std::fabs(y);
   if (ax == 0.0 && ay == 0.0) return 0.0;
   const bool swapped = ay > ax;
-  double a = swapped ? detail::atan_unit(ax / ay) : detail::atan_unit(ay / ax);
-  if (swapped) a = kHalfPi - a;
-  if (x < 0) a = kPiValue - a;
+  const double lo = swapped ? ax : ay, hi = swapped ? ay : ax;
+  double a = detail::atan_ratio(lo, hi);
+  a = swapped ? kHalfPi - a : a;
+  a = x < 0 ? kPiValue - a : a;
   return y < 0 ? -a : a;
 }
 

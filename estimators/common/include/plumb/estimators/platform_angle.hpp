@@ -26,10 +26,11 @@ struct PlatformAngle {
   double rate_rad_s = 0;         // least-squares slope of the unwrapped toolface
   double turn_rad = 0;           // phase.back() - phase.front()
   double block_span_rad = 0;     // span of half-second block means of the raw toolface
+  double motion_rad = 0;         // max(block span, |rate| x duration): how far the platform moved
   double phase_noise_var = 0;    // per-sample variance of the raw toolface, rad^2
   double residual_var = 0;       // of the raw toolface about the chosen model
   int model_degree = 0;          // polynomial degree used; 0 = local smoother
-  double radial_field = 0;       // mean |(Bx, By)|
+  double radial_field = 0;       // RMS of |(Bx, By)|
 
   bool uniform_linear = false;    // degree-1 model on evenly spaced samples: phase[k] = phase[0] + k step
   double step = 0;               // rad per sample when uniform_linear

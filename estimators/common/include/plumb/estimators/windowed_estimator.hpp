@@ -20,7 +20,7 @@ class WindowedEstimator : public estimator::Estimator {
   void configure(const estimator::Parameters& params) final;
   void push(std::span<const Sample> samples, std::vector<Estimate>& out) final;
   void flush(std::vector<Estimate>& out) final;
-  estimator::Counters counters() const final { return counters_; }
+  estimator::Counters counters() const final;
 
   // Windows shorter than this many samples are reported invalid.
   static constexpr std::size_t kMinSamples = 10;
@@ -40,7 +40,11 @@ class WindowedEstimator : public estimator::Estimator {
   void accept(const Sample& s, std::vector<Estimate>& out);
   bool usable(const Sample& s);
   void close_window(bool partial, const std::string& note, std::vector<Estimate>& out);
-  void count(const std::string& what) { ++counters_[what]; }
+  // Plain fields, not map entries: counting runs once per sample.
+  struct Counts {
+    std::uint64_t accepted = 0, non_finite = 0, saturated = 0, out_of_range = 0, time_backwards = 0, gaps = 0;
+    std::uint64_t windows = 0, invalid_windows = 0;
+  };
   void reset();
 
   double window_s_ = 10;
@@ -48,7 +52,7 @@ class WindowedEstimator : public estimator::Estimator {
   std::optional<double> last_t_;
   std::vector<double> first_spacings_;  // to learn the nominal spacing
   double nominal_dt_ = 0;
-  estimator::Counters counters_;
+  Counts counts_;
 };
 
 // Replaces every non-finite number by 0 and marks the estimate invalid: the last line of defence

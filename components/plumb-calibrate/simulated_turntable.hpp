@@ -1,0 +1,32 @@
+// A simulated turntable with a simulated operator, publishing raw sensor batches on
+// plumb/sensor/raw from its own participant: it puts the tool at whichever position the live
+// procedure asks for next, so that the live path runs end to end without hardware.
+#pragma once
+
+#include <atomic>
+#include <thread>
+#include <vector>
+
+#include "options.hpp"
+#include "plumb/sim/turntable.hpp"
+
+namespace plumb::calibrate {
+
+class SimulatedTurntable {
+ public:
+  SimulatedTurntable(const Options& o, std::vector<sim::StationPlan> plans, const std::atomic<int>& requested);
+  ~SimulatedTurntable();
+  SimulatedTurntable(const SimulatedTurntable&) = delete;
+  SimulatedTurntable& operator=(const SimulatedTurntable&) = delete;
+
+ private:
+  void run();
+  Options options_;
+  std::vector<sim::StationPlan> plans_;
+  const std::atomic<int>& requested_;
+  std::atomic<bool> stop_{false};
+  components::Connection connection_;
+  std::thread thread_;
+};
+
+}  // namespace plumb::calibrate

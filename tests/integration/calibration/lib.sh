@@ -1,0 +1,15 @@
+# Small assertion helpers for the calibration integration tests.
+fails=0
+pass() { echo "ok   - $*"; }
+fail() { echo "FAIL - $*"; fails=$((fails + 1)); }
+# expect_error "description" "stderr pattern" command...: non-zero exit, stderr matching.
+expect_error() {
+  local what=$1 pattern=$2; shift 2
+  local err rc=0
+  err=$("$@" 2>&1 >/dev/null) || rc=$?
+  if [ $rc -eq 0 ]; then fail "$what: exit 0 (expected an error)"; return; fi
+  if [ $rc -gt 128 ]; then fail "$what: killed by signal $((rc - 128))"; return; fi
+  if ! printf '%s' "$err" | grep -qE "$pattern"; then fail "$what: stderr '$err' lacks /$pattern/"; return; fi
+  pass "$what: $(printf '%s' "$err" | tail -1)"
+}
+finish() { if [ $fails -ne 0 ]; then echo "$fails check(s) failed"; exit 1; fi; echo "all checks passed"; }

@@ -1,0 +1,73 @@
+// The comparison library's plumbing: progress, tables, CSV, SVG and errors (small grid).
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "plumb/compare/compare.hpp"
+
+namespace plumb::compare {
+namespace {
+
+CompareConfig small() {
+  CompareConfig c;
+  c.inclinations_deg = {1, 2};
+  c.rpms = {60};
+  c.snr_accel_db = {20};
+  c.azimuths_deg = {0, 90, 180, 270};
+  c.seeds = 2;
+  return c;
+}
+
+TEST(CompareLibrary, RunsTheGridWithProgress) {
+  std::size_t calls = 0, last_total = 0;
+  const CompareResult r = run_compare(small(), [&](std::size_t done, std::size_t total) {
+    ++calls;
+    EXPECT_EQ(done, calls);
+    last_total = total;
+  });
+  EXPECT_EQ(calls, 16u);
+  EXPECT_EQ(last_total, 16u);
+  EXPECT_EQ(r.records, 16u);
+  ASSERT_EQ(r.cases.size(), 2u);
+  for (const auto& c : r.cases) {
+    ASSERT_EQ(c.plugins.size(), 3u);
+    EXPECT_GT(c.crb_azimuth_deg, 0);
+    EXPECT_EQ(c.find("static")->valid, 0);  // turning
+    EXPECT_EQ(c.find("compensated")->valid, 8);
+    EXPECT_EQ(c.find("compensated")->by_azimuth.size(), 4u);
+  }
+}
+
+TEST(CompareLibrary, WritesTableCsvAndSvg) {
+  const CompareResult r = run_compare(small());
+  std::ostringstream table, csv, svg, empty;
+  write_report(table, r);
+  EXPECT_NE(table.str().find("compensated"), std::string::npos);
+  EXPECT_NE(table.str().find("platform rotating"), std::string::npos);
+  write_csv(csv, r);
+  std::size_t lines = 0;
+  for (char ch : csv.str()) lines += ch == '\n';
+  EXPECT_EQ(lines, 1u + 2 * 3);
+  write_svg_plot(svg, r, {60, 20, false});
+  const std::string s = svg.str();
+  EXPECT_EQ(s.rfind("<svg", 0), 0u);
+  EXPECT_NE(s.find("</svg>"), std::string::npos);
+  // Two panels, two drawable plugins each (static has no valid point).
+  std::size_t polylines = 0;
+  for (std::size_t p = s.find("<polyline"); p != std::string::npos; p = s.find("<polyline", p + 1)) ++polylines;
+  EXPECT_EQ(polylines, 4u);
+  write_svg_plot(empty, r, {300, 20, true});
+  EXPECT_NE(empty.str().find("no case"), std::string::npos);
+}
+
+TEST(CompareLibrary, UnknownPluginAndBadParameterAreErrors) {
+  CompareConfig c = small();
+  c.plugins = {"compensated", "nonexistent"};
+  EXPECT_THROW(run_compare(c), std::runtime_error);
+  c = small();
+  c.plugin_parameters["static"] = {{"max_turn", "-3"}};
+  EXPECT_THROW(run_compare(c), estimator::ParameterError);
+}
+
+}  // namespace
+}  // namespace plumb::compare
