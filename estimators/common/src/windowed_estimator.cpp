@@ -16,7 +16,7 @@ std::string format(const char* fmt, double value) {
 
 }  // namespace
 
-WindowedEstimator::WindowedEstimator() { window_.reserve(1024); }
+WindowedEstimator::WindowedEstimator() = default;
 
 estimator::Info WindowedEstimator::info() const {
   estimator::Info info = describe();
@@ -49,6 +49,7 @@ estimator::Counters WindowedEstimator::counters() const {
 
 void WindowedEstimator::reset() {
   window_.clear();
+  count_ = 0;
   last_t_.reset();
   first_spacings_.clear();
   nominal_dt_ = 0;
@@ -79,7 +80,6 @@ bool WindowedEstimator::usable(const Sample& s) {
 
 void WindowedEstimator::push(std::span<const Sample> samples, std::vector<Estimate>& out) {
   // Room for the rest of the window up front: push_back then never reallocates mid-window.
-  if (window_.t.capacity() < window_.t.size() + samples.size()) window_.reserve(2 * (window_.t.size() + samples.size()));
   for (const Sample& s : samples) accept(s, out);
 }
 
@@ -103,31 +103,38 @@ void WindowedEstimator::accept(const Sample& s, std::vector<Estimate>& out) {
       }
     }
   }
-  if (window_s_ > 0 && !window_.empty() && s.t >= window_.t.front() + window_s_ * (1 - 1e-9)) {
+  if (window_s_ > 0 && count_ > 0 && s.t >= window_.t[0] + window_s_ * (1 - 1e-9)) {
     close_window(false, {}, out);
   }
   last_t_ = s.t;
-  window_.t.push_back(s.t);
-  window_.gx.push_back(-s.f.x());
-  window_.gy.push_back(-s.f.y());
-  window_.gz.push_back(-s.f.z());
-  window_.bx.push_back(s.b.x());
-  window_.by.push_back(s.b.y());
-  window_.bz.push_back(s.b.z());
+  // Columns are kept sized ahead of the fill level and written by index: seven push_backs per
+  // sample cost more than the whole platform-angle tracker.
+  if (count_ == window_.t.size()) grow();
+  const std::size_t i = count_++;
+  window_.t[i] = s.t;
+  window_.gx[i] = -s.f.x();
+  window_.gy[i] = -s.f.y();
+  window_.gz[i] = -s.f.z();
+  window_.bx[i] = s.b.x();
+  window_.by[i] = s.b.y();
+  window_.bz[i] = s.b.z();
   ++counts_.accepted;
 }
 
 void WindowedEstimator::flush(std::vector<Estimate>& out) {
-  if (window_.empty()) return;
+  if (count_ == 0) return;
   // A window that spans its full length (first sample to one spacing past the last) is complete.
   const double dt = nominal_dt_ > 0 ? nominal_dt_ : 0.0;
-  const double covered = window_.t.back() - window_.t.front() + dt;
+  const double covered = window_.t[count_ - 1] - window_.t[0] + dt;
   const bool partial = window_s_ > 0 && covered < window_s_ * (1 - 1e-6);
   close_window(partial, {}, out);
 }
 
 void WindowedEstimator::close_window(bool partial, const std::string& note, std::vector<Estimate>& out) {
-  if (window_.empty()) return;
+  if (count_ == 0) return;
+  for (auto* column : {&window_.t, &window_.gx, &window_.gy, &window_.gz, &window_.bx, &window_.by, &window_.bz}) {
+    column->resize(count_);  // shrinking keeps the capacity
+  }
   window_.nominal_dt = nominal_dt_;
   Estimate e;
   if (window_.size() < kMinSamples) {
@@ -147,7 +154,16 @@ void WindowedEstimator::close_window(bool partial, const std::string& note, std:
   if (!e.valid) ++counts_.invalid_windows;
   ++counts_.windows;
   out.push_back(std::move(e));
-  window_.clear();
+  count_ = 0;
+}
+
+void WindowedEstimator::grow() {
+  // Back to the full capacity after a window was handed out, or double it.
+  const std::size_t size = window_.t.size() < window_.t.capacity() ? window_.t.capacity()
+                                                                   : std::max<std::size_t>(1024, 2 * window_.t.size());
+  for (auto* column : {&window_.t, &window_.gx, &window_.gy, &window_.gz, &window_.bx, &window_.by, &window_.bz}) {
+    column->resize(size);
+  }
 }
 
 void make_finite(Estimate& e) {

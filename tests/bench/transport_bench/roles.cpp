@@ -216,7 +216,7 @@ template <class T> int run_source(tr::Participant& participant, double seconds) 
   }
   std::this_thread::sleep_for(200ms);  // the reader side matches a little after the writer side
   const auto start = Clock::now();
-  const auto end = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds + 1));
+  const auto end = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds + 0.5));
   std::uint64_t seq = 0;
   while (Clock::now() < end) {
     for (int i = 0; i < 64; ++i) {

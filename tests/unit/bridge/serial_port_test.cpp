@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <thread>
 
 #include "plumb/bridge/frame_parser.hpp"
 #include "plumb/bridge/protocol.hpp"
@@ -62,8 +63,10 @@ TEST(SerialPort, ReadsFramesThroughAPseudoTerminalByItsSymlink) {
   SerialPort port({link, 921600, 10ms, 80ms}, c);
   FrameParser parser(c);
   // Bytes of every value, including the ones a cooked tty would translate (CR, NL, XON, ^C).
-  write_frames(pty, 0, 200);
+  // More than the pty buffers hold: the writer waits for the reader, from its own thread.
+  std::thread writer([&] { write_frames(pty, 0, 200); });
   const auto got = read_samples(port, parser, 200);
+  writer.join();
   ASSERT_EQ(got.size(), 200u);
   for (std::size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i].seq, i);
   EXPECT_EQ(c.opens, 1u);

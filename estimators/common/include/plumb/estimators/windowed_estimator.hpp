@@ -47,8 +47,11 @@ class WindowedEstimator : public estimator::Estimator {
   };
   void reset();
 
+  void grow();
+
   double window_s_ = 10;
-  WindowData window_;
+  WindowData window_;     // columns sized ahead; the first count_ rows are the window
+  std::size_t count_ = 0;
   std::optional<double> last_t_;
   std::vector<double> first_spacings_;  // to learn the nominal spacing
   double nominal_dt_ = 0;
