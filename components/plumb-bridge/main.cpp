@@ -95,6 +95,12 @@ void add_options(CLI::App& app, Options& o) {
   (void)tool;
 }
 
+std::string seconds_text(double s) {
+  std::ostringstream out;
+  out << s;
+  return out.str();
+}
+
 void log(const std::string& line) { std::cout << kProgram << ": " << line << std::endl; }
 
 std::string summary(const Counters& c) {
@@ -128,6 +134,7 @@ int run(const Options& o, const CLI::App& app) {
       std::cerr << kProgram << ": further bad rows are counted (csv_errors) but not printed" << std::endl;
   };
 
+  SampleChecker checker(counters, o.limits);
   std::unique_ptr<SampleSource> source;
   if (!o.replay.empty()) {
     const double speed = parse_rate(o.rate);
@@ -140,10 +147,15 @@ int run(const Options& o, const CLI::App& app) {
     serial.backoff_min = std::chrono::milliseconds(std::llround(o.backoff_min_s * 1000));
     serial.backoff_max = std::chrono::milliseconds(std::llround(o.backoff_max_s * 1000));
     source = std::make_unique<DeviceSource>(serial, *parse_mode(o.mode), counters,
-                                            [](SerialPort::Event e, const std::string& what) {
-                                              log(e == SerialPort::Event::Opened ? "opened " + what
-                                                                                 : "device lost (" + what +
-                                                                                       "); reopening with back-off");
+                                            [&](SerialPort::Event e, const std::string& what) {
+                                              if (e == SerialPort::Event::Opened) log("opened " + what);
+                                              if (e == SerialPort::Event::Closed) {
+                                                log("device lost (" + what + "); reopening with back-off");
+                                                checker.new_stream();
+                                              }
+                                              if (e == SerialPort::Event::OpenFailed)
+                                                log(what + "; retrying with back-off (" + seconds_text(o.backoff_min_s) + " s .. " +
+                                                    seconds_text(o.backoff_max_s) + " s)");
                                             });
   }
 
@@ -173,7 +185,6 @@ int run(const Options& o, const CLI::App& app) {
     log(std::to_string(publisher.sensor_readers()) + " sensor topic reader(s) matched");
   }
 
-  SampleChecker checker(counters, o.limits);
   Batcher batcher;
   std::vector<Sample> samples;
   const auto status_period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.status_period_s));

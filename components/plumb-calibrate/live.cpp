@@ -78,8 +78,10 @@ class StationDetector {
   Event on_reading(const Reading& r) {
     switch (phase_) {
       case Phase::WaitMove: {
+        // All six channels: a turn about the vertical (24 positions) barely changes the
+        // accelerometers but turns the field.
         const auto d = (r.mean - last_station_).cwiseAbs();
-        for (int c = 0; c < channels_; ++c)
+        for (int c = 0; c < 6; ++c)
           if (d[c] > 20 * last_tol_[c]) {
             phase_ = Phase::WaitSettle;
             readings_.clear();

@@ -11,8 +11,22 @@ bool DeviceSource::poll(std::vector<Sample>& out, std::chrono::milliseconds max_
   const auto r = port_.read(buffer_.data(), buffer_.size(), max_wait);
   if (r.bytes > 0) parser_.feed(std::span(buffer_.data(), r.bytes), out);
   if (r.event == SerialPort::Event::Closed) parser_.finish(out);
-  if (on_event_ && (r.event == SerialPort::Event::Opened || r.event == SerialPort::Event::Closed)) {
-    on_event_(r.event, r.event == SerialPort::Event::Closed ? port_.last_error() : options_.path);
+  if (!on_event_) return true;
+  switch (r.event) {
+    case SerialPort::Event::Opened:
+      open_failure_reported_ = false;
+      on_event_(r.event, options_.path);
+      break;
+    case SerialPort::Event::Closed:
+      open_failure_reported_ = false;
+      on_event_(r.event, port_.last_error());
+      break;
+    case SerialPort::Event::OpenFailed:
+      if (!open_failure_reported_) on_event_(r.event, port_.last_error());
+      open_failure_reported_ = true;
+      break;
+    default:
+      break;
   }
   return true;
 }

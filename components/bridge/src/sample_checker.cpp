@@ -33,7 +33,7 @@ bool SampleChecker::check(Sample& s) {
         c_.samples_missing += s.seq - last_seq_ - 1;
         s.flags |= flags::kGapBefore;
       }
-    } else if (last_seq_ - s.seq <= limits_.duplicate_window) {
+    } else if (!new_stream_ && last_seq_ - s.seq <= limits_.duplicate_window) {
       ++c_.duplicates;
       return false;
     } else {
@@ -46,6 +46,7 @@ bool SampleChecker::check(Sample& s) {
     }
   }
   have_last_ = true;
+  new_stream_ = false;
   last_seq_ = s.seq;
   if (std::isfinite(s.t)) last_t_ = s.t;
 

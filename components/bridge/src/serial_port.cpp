@@ -112,7 +112,7 @@ SerialPort::ReadResult SerialPort::read(std::uint8_t* buffer, std::size_t capaci
     // Exponential back-off, capped: a missing device is retried forever without spinning.
     next_attempt_ = clock::now() + backoff_;
     backoff_ = std::min(backoff_ * 2, options_.backoff_max);
-    return {};
+    return {0, Event::OpenFailed};
   }
   pollfd p{fd_, POLLIN, 0};
   const int ready = ::poll(&p, 1, static_cast<int>(timeout.count()));

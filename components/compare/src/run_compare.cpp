@@ -19,6 +19,21 @@ std::vector<double> CompareConfig::azimuth_sweep() const {
   return sweep;
 }
 
+CompareConfig CompareConfig::single(const sim::Scenario& scenario, int seeds) {
+  CompareConfig c;
+  c.base = scenario;
+  c.inclinations_deg = {scenario.inclination_deg};
+  c.azimuths_deg = {scenario.azimuth_deg};
+  c.rpms = {scenario.rotation.kind == sim::ProfileKind::Ramp ? scenario.rotation.rpm_end : scenario.rotation.rpm};
+  c.snr_accel_db = {scenario.noise.snr_accel_db.value_or(0)};
+  c.snr_mag_db = scenario.noise.snr_mag_db.value_or(0);
+  c.use_base_noise = true;
+  c.vary_toolface = false;
+  c.seeds = seeds;
+  c.base_seed = scenario.seed;
+  return c;
+}
+
 const PluginCaseResult* CaseResult::find(const std::string& plugin) const {
   for (const auto& p : plugins) {
     if (p.plugin == plugin) return &p;
@@ -66,10 +81,12 @@ sim::Scenario record_scenario(const CompareConfig& config, double inc, double az
   } else {
     s.rotation.rpm = rpm;
   }
-  s.noise.sigma_accel.reset();
-  s.noise.sigma_mag.reset();
-  s.noise.snr_accel_db = snr;
-  s.noise.snr_mag_db = config.snr_mag_db;
+  if (!config.use_base_noise) {
+    s.noise.sigma_accel.reset();
+    s.noise.sigma_mag.reset();
+    s.noise.snr_accel_db = snr;
+    s.noise.snr_mag_db = config.snr_mag_db;
+  }
   s.seed = seed;
   // Golden-angle steps spread the start toolface evenly whatever the number of records.
   if (config.vary_toolface) s.toolface0_deg = std::fmod(137.50776405 * static_cast<double>(serial), 360.0);

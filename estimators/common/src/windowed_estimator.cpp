@@ -119,6 +119,12 @@ void WindowedEstimator::accept(const Sample& s, std::vector<Estimate>& out) {
   window_.by[i] = s.b.y();
   window_.bz[i] = s.b.z();
   ++counts_.accepted;
+  // The window is complete once its last sample is in: emit now instead of on the next sample,
+  // which would add one sample period (a whole batch over DDS) to the latency. The same windows
+  // as the rule above; that one still closes windows when the spacing is not yet known.
+  if (window_s_ > 0 && nominal_dt_ > 0 && s.t + nominal_dt_ >= window_.t[0] + window_s_ * (1 - 1e-9)) {
+    close_window(false, {}, out);
+  }
 }
 
 void WindowedEstimator::flush(std::vector<Estimate>& out) {

@@ -101,6 +101,16 @@ void write_triad(std::ostream& out, std::string_view prefix, const TriadModel& t
   write_values(out, p + ".scale_temp", as_vector(t.scale_temp));
 }
 
+// Ids are the rest of their line: a '#' would start a comment and a line break end the value, and
+// surrounding blanks are trimmed on reading.
+std::string text_value(std::string s) {
+  for (char& c : s)
+    if (c == '#' || c == '\n' || c == '\r') c = '_';
+  const auto b = s.find_first_not_of(" \t");
+  if (b == std::string::npos) return {};
+  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
+}
+
 std::string trim(std::string_view s) {
   const auto b = s.find_first_not_of(" \t\r");
   if (b == std::string_view::npos) return {};
@@ -181,8 +191,8 @@ void write_calibration(std::ostream& out, const CalibrationModel& m) {
       << "# sensitivity S is 9 values, row-major. accel.*: raw units -> m/s^2 specific force;\n"
       << "# mag.*: raw units -> microtesla.\n";
   out << "format " << kFormatName << ' ' << kFormatVersion << '\n';
-  out << "tool_id " << m.tool_id << '\n';
-  out << "calibration_id " << m.calibration_id << '\n';
+  out << "tool_id " << text_value(m.tool_id) << '\n';
+  out << "calibration_id " << text_value(m.calibration_id) << '\n';
   write_values(out, "stamp_s", std::vector<double>{m.stamp_s});
   write_values(out, "reference_temp_c", std::vector<double>{m.reference_temp_c});
   write_values(out, "temp_range_c", std::vector<double>{m.temp_min_c, m.temp_max_c});

@@ -133,7 +133,9 @@ bool SensorReader::next(Sample& out) {
     }
     if (col_seq_ >= 0) {
       const double seq = get(col_seq_);
-      if (!(seq >= 0) || seq != std::floor(seq)) throw Error(source_, line_, "seq", "not a non-negative integer");
+      // 2^64 and above would overflow the conversion (undefined behaviour; found by fuzzing).
+      if (!(seq >= 0) || seq != std::floor(seq) || seq >= 18446744073709551616.0)
+        throw Error(source_, line_, "seq", "not a non-negative integer");
       s.seq = static_cast<std::uint64_t>(seq);
     } else {
       s.seq = rows_;

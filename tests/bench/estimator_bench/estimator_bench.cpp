@@ -81,11 +81,22 @@ int main(int argc, char** argv) {
   }
   RateReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
-  const double base = reporter.rates.count("baseline_sum") ? reporter.rates["baseline_sum"] : 0;
-  std::printf("\n%-24s %16s %18s %10s\n", "benchmark", "Msamples/s/core", "baseline/plugin", "goal");
+  // With --benchmark_repetitions the names carry _mean, _median, ...: compare like with like.
+  auto suffix_of = [](const std::string& name) -> std::string {
+    for (const char* s : {"_mean", "_median", "_stddev", "_cv"}) {
+      const std::string suffix = s;
+      if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) return suffix;
+    }
+    return {};
+  };
+  std::printf("\n%-28s %16s %18s %10s\n", "benchmark", "Msamples/s/core", "baseline/plugin", "goal");
   for (const auto& [name, rate] : reporter.rates) {
-    const bool goal = name == "plugin/compensated";
-    std::printf("%-24s %16.2f %18.1f %10s\n", name.c_str(), rate / 1e6, rate > 0 ? base / rate : 0.0,
+    const std::string suffix = suffix_of(name);
+    if (suffix == "_stddev" || suffix == "_cv") continue;
+    const auto base = reporter.rates.find("baseline_sum" + suffix);
+    const double ratio = base != reporter.rates.end() && rate > 0 ? base->second / rate : 0.0;
+    const bool goal = name.rfind("plugin/compensated", 0) == 0;
+    std::printf("%-28s %16.2f %18.1f %10s\n", name.c_str(), rate / 1e6, ratio,
                 goal ? (rate >= 20e6 ? ">=20 ok" : ">=20 MISS") : "");
   }
   benchmark::Shutdown();

@@ -2,6 +2,7 @@
 # A scripted board (plumb-test-serial-feeder) sends 200 frames with one of every fault and
 # disappears once; the bridge must deliver exactly the usable samples on the raw topic (no
 # calibration given: raw keeps flowing) and count every fault exactly on plumb/status.
+# Then the ASCII line mode, detected from the data, from plumb-sim --serial-mode ascii.
 # usage: bridge_faults.sh BIN_DIR TRANSPORT DOMAIN
 set -euo pipefail
 bin=$1 transport=$2
@@ -53,4 +54,29 @@ expect_counter "$s" samples_published 196
 expect_counter "$s" calibrated_batches 0
 grep -q "device lost" "$work/bridge.out" || { echo "FAIL - no 'device lost' log line"; fails=$((fails + 1)); }
 [ $fails -eq 0 ] || { show_logs; exit 1; }
+
+# ASCII line mode, detected from the data: plumb-sim --serial-mode ascii -> bridge --mode auto.
+if [ -x "$bin/plumb-sim" ]; then
+  rm -f "$work"/*.out
+  "$bin/plumb-test-bridge-checker" --transport "$transport" --topic plumb/sensor/raw --reliable --count 200 \
+    --settle 0.5 --timeout 60 --status-out "$work/status2.txt" > "$work/checker2.out" 2>&1 &
+  checker=$!
+  pids+=($checker)
+  "$bin/plumb-bridge" --transport "$transport" --device "$link" --no-calibration-topic --reliable \
+    --backoff-min 0.05 --backoff-max 0.2 --wait-subscribers 20 > "$work/bridge2.out" 2>&1 &
+  bridge=$!
+  pids+=($bridge)
+  sleep 1
+  "$bin/plumb-sim" --serial "$link" --serial-mode ascii --duration 2 --rpm 60 --inclination 2 --no-truth --rate x2 \
+    > "$work/sim2.out" 2>&1 || { show_logs; exit 1; }
+  sleep 1
+  kill -INT "$bridge"
+  wait "$bridge" || { show_logs; exit 1; }
+  wait "$checker" || { show_logs; exit 1; }
+  expect_counter "$work/status2.txt" lines_ok 200
+  expect_counter "$work/status2.txt" frames_ok 0
+  expect_counter "$work/status2.txt" csv_errors 0
+  expect_counter "$work/status2.txt" bytes_skipped 0
+  [ $fails -eq 0 ] || { show_logs; exit 1; }
+fi
 echo "all checks passed"

@@ -12,7 +12,7 @@ trap '[ -n "$pid" ] && kill $pid 2>/dev/null; rm -rf "$work"' EXIT
 cd "$work"
 export PLUMB_DOMAIN_ID=$domain
 "$bin/plumb-calibrate" --transport "$tcal" --live --simulate-turntable --procedure 6pos --sim-speed 25 \
-  --station-seconds 10 --linger 20 --timeout 120 --calibration-id live-test-$domain --output live.txt \
+  --station-seconds 10 --linger 8 --timeout 120 --calibration-id live-test-$domain --output live.txt \
   --report report.txt >out.txt 2>err.txt &
 pid=$!
 for _ in $(seq 1 600); do

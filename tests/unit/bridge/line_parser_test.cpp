@@ -126,6 +126,22 @@ TEST(SensorReader, ErrorNamesLineAndColumnAndTheReaderContinues) {
   EXPECT_FALSE(reader.next(s));
 }
 
+TEST(SensorReader, SequenceNumberBeyond64BitsIsAnErrorNotOverflow) {
+  // Found by tests/fuzz: converting 7.8e71 to uint64 was undefined behaviour.
+  std::istringstream in("seq,t,fx,fy,fz,bx,by,bz\n7.8e71,0,1,2,3,4,5,6\n18446744073709551615,0,1,2,3,4,5,6\n");
+  csv::SensorReader reader(in, "f.csv");
+  Sample s;
+  try {
+    reader.next(s);
+    FAIL() << "seq 7.8e71 must throw";
+  } catch (const csv::Error& e) {
+    EXPECT_EQ(e.column, "seq");
+    EXPECT_EQ(e.line, 2u);
+  }
+  // 2^64 - 1 reads as the double 2^64: also out of range.
+  EXPECT_THROW(reader.next(s), csv::Error);
+}
+
 TEST(StreamParser, AutoModeDetectsBinary) {
   Counters c;
   StreamParser parser(c, Mode::Auto);

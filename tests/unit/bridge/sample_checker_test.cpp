@@ -56,6 +56,29 @@ TEST(SampleChecker, BoardRestartIsCountedAndKept) {
   EXPECT_EQ(c.time_backwards, 1u);
 }
 
+TEST(SampleChecker, AfterTheDeviceCameBackAnOldSequenceNumberIsARestartNotADuplicate) {
+  Counters c;
+  SampleChecker checker(c);
+  Sample a = test::make_sample(10), b = test::make_sample(3), d = test::make_sample(3);
+  checker.check(a);
+  checker.new_stream();
+  EXPECT_TRUE(checker.check(b));   // the board restarted while away: kept
+  EXPECT_FALSE(checker.check(d));  // a real duplicate within the new stream: dropped
+  EXPECT_EQ(c.seq_restarts, 1u);
+  EXPECT_EQ(c.duplicates, 1u);
+}
+
+TEST(SampleChecker, AfterTheDeviceCameBackLostSamplesAreAGap) {
+  Counters c;
+  SampleChecker checker(c);
+  Sample a = test::make_sample(10), b = test::make_sample(15);
+  checker.check(a);
+  checker.new_stream();
+  checker.check(b);
+  EXPECT_EQ(c.seq_gaps, 1u);
+  EXPECT_EQ(c.samples_missing, 4u);
+}
+
 TEST(SampleChecker, TimeGoingBackwardsIsFlaggedOnce) {
   Counters c;
   SampleChecker checker(c);

@@ -41,7 +41,7 @@ std::vector<Sample> read_samples(SerialPort& port, FrameParser& parser, std::siz
   const auto guard = std::chrono::steady_clock::now() + 10s;
   while (out.size() < want && std::chrono::steady_clock::now() < guard) {
     const auto r = port.read(buf, sizeof buf, 20ms);
-    if (events && r.event != SerialPort::Event::None && r.event != SerialPort::Event::Data) events->push_back(r.event);
+    if (events && (r.event == SerialPort::Event::Opened || r.event == SerialPort::Event::Closed)) events->push_back(r.event);
     if (r.bytes) parser.feed(std::span(buf, r.bytes), out);
     if (r.event == SerialPort::Event::Closed) parser.finish();
   }
@@ -127,12 +127,16 @@ TEST(SerialPort, MissingDeviceIsRetriedWithCappedExponentialBackoff) {
   std::uint8_t buf[16];
   std::vector<long> backoffs;  // each new value the back-off takes
   const auto until = std::chrono::steady_clock::now() + 300ms;  // several attempts at 10..40 ms
+  std::size_t failed_opens = 0;
   while (std::chrono::steady_clock::now() < until) {
-    port.read(buf, sizeof buf, 5ms);
+    failed_opens += port.read(buf, sizeof buf, 5ms).event == SerialPort::Event::OpenFailed;
     const long b = port.current_backoff().count();
     if (backoffs.empty() || backoffs.back() != b) backoffs.push_back(b);
   }
   EXPECT_EQ(backoffs, (std::vector<long>{20, 40}));  // doubled after each failure, then capped
+  // Attempts at 0, 10, 30, 70, 110, ... ms: one per back-off period, no spinning.
+  EXPECT_GE(failed_opens, 3u);
+  EXPECT_LE(failed_opens, 300u / 40u + 3u);
   EXPECT_NE(port.last_error().find("cannot open"), std::string::npos) << port.last_error();
   EXPECT_EQ(c.opens, 0u);
 }
@@ -153,6 +157,20 @@ TEST(SerialPort, RegularFileIsNotATerminal) {
   port.read(buf, sizeof buf, 1ms);
   EXPECT_FALSE(port.is_open());
   EXPECT_NE(port.last_error().find("not a terminal"), std::string::npos) << port.last_error();
+}
+
+TEST(PseudoTerminal, DrainWaitsForTheReaderAndGivesUpWithoutOne) {
+  PseudoTerminal pty;
+  const auto frame = encode_frame(test::make_sample(0));
+  ASSERT_TRUE(pty.write_all(frame.data(), frame.size(), 1s));
+  EXPECT_FALSE(pty.drain(300ms));  // nobody reads: the bytes stay
+  Counters c;
+  SerialPort port({pty.slave_path(), 9600, 10ms, 20ms}, c);
+  FrameParser parser(c);
+  std::thread reader([&] { read_samples(port, parser, 1); });
+  EXPECT_TRUE(pty.drain(10s));
+  reader.join();
+  EXPECT_EQ(c.frames_ok, 1u);
 }
 
 TEST(Symlink, ReplaceRefusesToClobberARealFile) {

@@ -71,3 +71,28 @@ TEST(CompareLibrary, UnknownPluginAndBadParameterAreErrors) {
 
 }  // namespace
 }  // namespace plumb::compare
+
+namespace plumb::compare {
+namespace {
+
+// A single scenario keeps its own noise (sigmas here) and sensor errors.
+TEST(CompareLibrary, SingleScenarioKeepsItsNoise) {
+  sim::Scenario s = sim::Scenario::reference(1.5, 123, 90, 20);
+  s.noise = {};
+  s.noise.sigma_accel = 0.01;
+  s.noise.sigma_mag = 0.2;
+  CompareConfig c = CompareConfig::single(s, 3);
+  c.plugins = {"compensated"};
+  const CompareResult r = run_compare(c);
+  ASSERT_EQ(r.cases.size(), 1u);
+  EXPECT_DOUBLE_EQ(r.cases[0].sigma_accel, 0.01);
+  EXPECT_DOUBLE_EQ(r.cases[0].sigma_mag, 0.2);
+  EXPECT_EQ(r.cases[0].rpm, 90);
+  EXPECT_EQ(r.records, 3u);
+  EXPECT_EQ(r.cases[0].plugins[0].valid, 3);
+  // Three records: each error within 4 bounds.
+  EXPECT_LE(r.cases[0].plugins[0].max_azimuth_error_deg, 4 * r.cases[0].crb_azimuth_deg);
+}
+
+}  // namespace
+}  // namespace plumb::compare

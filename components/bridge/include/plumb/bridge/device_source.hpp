@@ -13,7 +13,8 @@ namespace plumb::bridge {
 
 class DeviceSource final : public SampleSource {
  public:
-  // `on_event` (optional) hears of the device opening and closing, for the log.
+  // `on_event` (optional) hears of the device opening and closing, and of the first failed
+  // open after each of those (not of every retry), for the log.
   DeviceSource(const SerialOptions& options, Mode mode, Counters& counters,
                std::function<void(SerialPort::Event, const std::string&)> on_event = {});
   bool poll(std::vector<Sample>& out, std::chrono::milliseconds max_wait) override;
@@ -27,6 +28,7 @@ class DeviceSource final : public SampleSource {
   StreamParser parser_;
   std::function<void(SerialPort::Event, const std::string&)> on_event_;
   std::vector<std::uint8_t> buffer_;
+  bool open_failure_reported_ = false;
 };
 
 }  // namespace plumb::bridge

@@ -32,13 +32,16 @@ class SampleChecker {
   SampleChecker(Counters& counters, const Limits& limits = {}) : c_(counters), limits_(limits) {}
   // Flags `s` in place; false when it must be dropped (duplicate).
   bool check(Sample& s);
-  // A new stream (device reopened): the next sequence number starts fresh without a gap.
-  void reset() { have_last_ = false; }
+  // A new stream (device reopened): the next sample may come from a board that restarted, so a
+  // sequence number not newer than the last one is a restart there, never a duplicate; a newer
+  // one still shows the samples lost while the device was away as a gap.
+  void new_stream() { new_stream_ = true; }
 
  private:
   Counters& c_;
   Limits limits_;
   bool have_last_ = false;
+  bool new_stream_ = false;
   std::uint64_t last_seq_ = 0;
   double last_t_ = 0;
 };

@@ -27,10 +27,10 @@ struct SerialOptions {
 
 class SerialPort {
  public:
-  enum class Event { None, Data, Opened, Closed };
+  enum class Event { None, Data, Opened, Closed, OpenFailed };
   struct ReadResult {
     std::size_t bytes = 0;
-    Event event = Event::None;  // Closed: the stream ended (flush the parser)
+    Event event = Event::None;  // Closed: the stream ended (flush the parser); OpenFailed: will retry
   };
 
   // Counts into `counters` (opens, reopens, read_errors, bytes_read). Throws std::invalid_argument

@@ -35,7 +35,14 @@ struct CompareConfig {
   // Turn each record's start toolface with the seed, so records do not all start alike.
   bool vary_toolface = true;
 
+  // Keep base.noise as given (sigmas or SNRs) instead of applying snr_accel_db / snr_mag_db;
+  // snr_accel_db then only labels the case.
+  bool use_base_noise = false;
+
   static CompareConfig reference_grid() { return {}; }
+  // One scenario exactly as given (inclination, azimuth, rotation profile, noise, sensor errors):
+  // a one-case, one-azimuth grid; raise `seeds` for Monte Carlo statistics.
+  static CompareConfig single(const sim::Scenario& scenario, int seeds = 20);
   // The default azimuth sweep when azimuths_deg is empty.
   std::vector<double> azimuth_sweep() const;
 };
