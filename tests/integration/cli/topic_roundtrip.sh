@@ -23,11 +23,14 @@ wait $e2 && [ "$(grep -c . "$work/batch.csv")" -eq 3 ] && grep -q '^T7,,5,' "$wo
   grep -q '21.25' "$work/batch.csv" && pass "echo CSV printed one row per sample" ||
   fail "echo CSV: $(cat "$work/batch.csv")"
 
+# A publisher alive for 6 s; hz and list run while it is (list shows live endpoints only).
+timeout 60 "$bin/plumb" topic pub plumb/sim/truth rpm=60 --count 120 --rate 20 --wait 0 --transport "$pub_t" > /dev/null 2>&1 &
+p=$!
 timeout 60 "$bin/plumb" topic hz plumb/sim/truth --count 3 --transport "$echo_t" > "$work/hz.txt" 2>&1 &
 h=$!
-timeout 60 "$bin/plumb" topic list --wait 4 --transport "$echo_t" > "$work/list.txt" 2>&1 &
+timeout 60 "$bin/plumb" topic list --wait 3 --transport "$echo_t" > "$work/list.txt" 2>&1 &
 l=$!
-timeout 60 "$bin/plumb" topic pub plumb/sim/truth rpm=60 --count 60 --rate 20 --wait 10 --transport "$pub_t" > /dev/null 2>&1
+wait $p
 wait $h; grep -qE 'average rate: (1[6-9]|2[0-4])(\.[0-9]+)? Hz' "$work/hz.txt" && pass "hz measured about 20 Hz" ||
   fail "hz: $(cat "$work/hz.txt")"
 wait $l; grep -q 'plumb/sim/truth  \[plumb::msg::Truth\]' "$work/list.txt" && pass "list shows the truth topic and type" ||
