@@ -1,10 +1,12 @@
 #include "publisher.hpp"
 
-#include "calibration_convert.hpp"
+#include "plumb/components/calibration_convert.hpp"
 #include "plumb/components/convert.hpp"
 #include "status.hpp"
 
 namespace plumb::bridge {
+using components::calibration_problem;
+using components::to_model;
 namespace {
 transport::Qos sensor_qos(bool reliable) {
   return reliable ? transport::Qos::reliable_stream() : transport::Qos::sensor_stream();

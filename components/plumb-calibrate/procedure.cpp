@@ -6,7 +6,7 @@
 #include <fstream>
 #include <thread>
 
-#include "coefficients_topic.hpp"
+#include "plumb/components/calibration_convert.hpp"
 #include "plumb/calibration/report.hpp"
 #include "plumb/transport/topic_names.hpp"
 
@@ -98,7 +98,7 @@ void publish_coefficients(const Options& o, const CalibrationModel& model) {
   auto connection = components::connect(o.transport, "plumb-calibrate");
   auto writer = transport::make_writer<topics::CalibrationCoefficients>(
       *connection.participant, transport::topic_names::kCalibration, transport::Qos::calibration());
-  writer.write(to_topic(model));
+  writer.write(components::to_topic(model));
   std::printf("published coefficients '%s' on %s; staying %.0f s for late joiners\n", model.calibration_id.c_str(),
               transport::topic_names::kCalibration, o.linger_s);
   std::fflush(stdout);

@@ -140,15 +140,8 @@ Outcome least_squares(const std::vector<StationAverage>& averages, const LeastSq
 
 Outcome least_squares(const std::vector<Sample>& samples, const std::vector<Station>& stations,
                       const LeastSquaresOptions& options) {
-  std::vector<StationAverage> averages;
-  try {
-    averages = average_stations(samples, stations, options.settle);
-  } catch (const std::exception& e) {
-    Outcome o;
-    o.error = e.what();
-    return o;
-  }
-  return least_squares(averages, options);
+  return detail::from_samples(samples, stations, options, options.settle,
+                              [](const std::vector<StationAverage>& a, const LeastSquaresOptions& o) { return least_squares(a, o); });
 }
 
 }  // namespace plumb::calibration

@@ -134,17 +134,10 @@ Outcome magnetometer(const std::vector<StationAverage>& averages, const Magnetom
 
 Outcome magnetometer(const std::vector<Sample>& samples, const std::vector<Station>& stations,
                      const MagnetometerOptions& options) {
-  std::vector<StationAverage> averages;
-  try {
-    SettleOptions settle = options.settle;
-    settle.check_mag = true;
-    averages = average_stations(samples, stations, settle);
-  } catch (const std::exception& e) {
-    Outcome o;
-    o.error = e.what();
-    return o;
-  }
-  return magnetometer(averages, options);
+  SettleOptions settle = options.settle;
+  settle.check_mag = true;  // the magnetometer must settle too
+  return detail::from_samples(samples, stations, options, settle,
+                              [](const std::vector<StationAverage>& a, const MagnetometerOptions& o) { return magnetometer(a, o); });
 }
 
 }  // namespace plumb::calibration

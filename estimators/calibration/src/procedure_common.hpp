@@ -30,6 +30,22 @@ std::vector<StationResidual> accel_residuals(const CalibrationModel& model, cons
 
 void fill_identity(Result& r, const CommonOptions& o);
 
+// The samples-and-stations form of a procedure: averages the stations (a station that never
+// settles becomes the outcome's error), then runs the procedure on the averages.
+template <class Options, class Procedure>
+Outcome from_samples(const std::vector<Sample>& samples, const std::vector<Station>& stations, const Options& options,
+                     const SettleOptions& settle, Procedure procedure) {
+  std::vector<StationAverage> averages;
+  try {
+    averages = average_stations(samples, stations, settle);
+  } catch (const std::exception& e) {
+    Outcome o;
+    o.error = e.what();
+    return o;
+  }
+  return procedure(averages, options);
+}
+
 std::string format(double x, int precision = 4);
 
 }  // namespace plumb::calibration::detail

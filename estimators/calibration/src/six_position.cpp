@@ -83,15 +83,8 @@ Outcome six_position(const std::vector<StationAverage>& averages, const CommonOp
 
 Outcome six_position(const std::vector<Sample>& samples, const std::vector<Station>& stations,
                      const CommonOptions& options) {
-  std::vector<StationAverage> averages;
-  try {
-    averages = average_stations(samples, stations, options.settle);
-  } catch (const std::exception& e) {
-    Outcome o;
-    o.error = e.what();
-    return o;
-  }
-  return six_position(averages, options);
+  return detail::from_samples(samples, stations, options, options.settle,
+                              [](const std::vector<StationAverage>& a, const CommonOptions& o) { return six_position(a, o); });
 }
 
 Procedure parse_procedure(const std::string& name) {

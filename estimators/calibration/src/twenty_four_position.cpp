@@ -219,15 +219,8 @@ Outcome twenty_four_position(const std::vector<StationAverage>& averages, const 
 
 Outcome twenty_four_position(const std::vector<Sample>& samples, const std::vector<Station>& stations,
                              const TwentyFourOptions& options) {
-  std::vector<StationAverage> averages;
-  try {
-    averages = average_stations(samples, stations, options.settle);
-  } catch (const std::exception& e) {
-    Outcome o;
-    o.error = e.what();
-    return o;
-  }
-  return twenty_four_position(averages, options);
+  return detail::from_samples(samples, stations, options, options.settle,
+                              [](const std::vector<StationAverage>& a, const TwentyFourOptions& o) { return twenty_four_position(a, o); });
 }
 
 }  // namespace plumb::calibration

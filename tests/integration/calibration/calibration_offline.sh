@@ -4,7 +4,7 @@
 set -u
 bin=$1
 here=$(cd "$(dirname "$0")" && pwd)
-. "$here/lib.sh"
+. "$here/../lib.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -37,24 +37,24 @@ grep -q 'accel.sensitivity.zz' rl.txt && pass "lsq: report has standard deviatio
   && pass "mag: exit 0" || fail "mag: calibration failed"
 
 # Bad input: nothing written on failure.
-expect_error "24pos on a 6-position recording" "position \+x@90 is missing" \
+expect_failure "24pos on a 6-position recording" "position \+x@90 is missing" \
   "$cal" --procedure 24pos --input 6pos_sensor.csv --stations 6pos_stations.csv --output bad.txt --report rbad.txt
 [ ! -e bad.txt ] && pass "failed procedure wrote no coefficients" || fail "failed procedure wrote coefficients"
 grep -q 'FAILED' rbad.txt && pass "failed procedure's report says so" || fail "report of the failure"
 sed 's/^p+y,\(.*\),+y,/p+y,\1,+z,/' 6pos_stations.csv > wrong.csv
-expect_error "tool in the wrong orientation" "station 'p-z'|station 'p\+y'|position \+z is repeated" \
+expect_failure "tool in the wrong orientation" "station 'p-z'|station 'p\+y'|position \+z is repeated" \
   "$cal" --procedure 6pos --input 6pos_sensor.csv --stations wrong.csv --output bad.txt
 grep -v '^p-y,' 6pos_stations.csv > missing.csv
-expect_error "missing position" "position -y is missing" "$cal" --procedure 6pos --input 6pos_sensor.csv --stations missing.csv
+expect_failure "missing position" "position -y is missing" "$cal" --procedure 6pos --input 6pos_sensor.csv --stations missing.csv
 head -4 lsq_stations.csv > few.csv
-expect_error "too few stations" "at least 12 .* got 2" "$cal" --procedure lsq --input lsq_sensor.csv --stations few.csv
+expect_failure "too few stations" "at least 12 .* got 2" "$cal" --procedure lsq --input lsq_sensor.csv --stations few.csv
 sed 's/,+x,/,+q,/' 6pos_stations.csv > badorient.csv
-expect_error "bad orientation names file and line" "badorient.csv:3: column 'orientation'" \
+expect_failure "bad orientation names file and line" "badorient.csv:3: column 'orientation'" \
   "$cal" --procedure 6pos --input 6pos_sensor.csv --stations badorient.csv
 printf 'name,start_s,orientation\n' > nocol.csv
-expect_error "station list without end_s" "lacks column 'end_s'" "$cal" --procedure 6pos --input 6pos_sensor.csv --stations nocol.csv
-expect_error "unknown procedure" "procedure" "$cal" --procedure 7pos --input x --stations y
-expect_error "missing sensor file" "nope.csv" "$cal" --procedure 6pos --input nope.csv --stations 6pos_stations.csv
+expect_failure "station list without end_s" "lacks column 'end_s'" "$cal" --procedure 6pos --input 6pos_sensor.csv --stations nocol.csv
+expect_failure "unknown procedure" "procedure" "$cal" --procedure 7pos --input x --stations y
+expect_failure "missing sensor file" "nope.csv" "$cal" --procedure 6pos --input nope.csv --stations 6pos_stations.csv
 [ ! -e bad.txt ] && pass "no coefficients from any failure" || fail "coefficients written by a failure"
 "$cal" --help >/dev/null && pass "--help" || fail "--help"
 finish

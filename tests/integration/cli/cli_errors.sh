@@ -4,7 +4,7 @@
 set -uo pipefail
 bin=$1
 export PLUMB_DOMAIN_ID=$2
-. "$(dirname "$0")/lib.sh"
+. "$(dirname "$0")/../lib.sh"
 
 for exe in plumb plumb-sim plumb-estimator plumb-bridge plumb-calibrate; do
   if [ -x "$bin/$exe" ]; then

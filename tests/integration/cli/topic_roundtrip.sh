@@ -4,7 +4,7 @@
 set -uo pipefail
 bin=$1 pub_t=$2 echo_t=$3
 export PLUMB_DOMAIN_ID=$4
-. "$(dirname "$0")/lib.sh"
+. "$(dirname "$0")/../lib.sh"
 work=$(mktemp -d)
 trap 'kill $(jobs -p) 2>/dev/null; rm -rf "$work"' EXIT
 

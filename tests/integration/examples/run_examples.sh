@@ -3,7 +3,7 @@
 # usage: run_examples.sh BIN_DIR PUB_T SUB_T DOMAIN
 set -uo pipefail
 bin=$1 pub_t=$2 sub_t=$3 domain=$4
-. "$(dirname "$0")/../cli/lib.sh"
+. "$(dirname "$0")/../lib.sh"
 out=$(mktemp)
 trap 'kill $(jobs -p) 2>/dev/null; rm -f "$out"' EXIT
 timeout 60 "$bin/plumb-example-subscriber" --transport "$sub_t" --domain "$domain" --count 3 --timeout 50 > "$out" 2>&1 &

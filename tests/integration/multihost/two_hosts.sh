@@ -7,7 +7,7 @@
 set -uo pipefail
 bin=$1 tool_t=$2 surface_t=$3
 here=$(cd "$(dirname "$0")" && pwd)
-. "$here/../cli/lib.sh"
+. "$here/../lib.sh"
 if ! ip netns add plumb-probe-$$ 2>/dev/null; then
   echo "cannot create network namespaces here (needs root and iproute2): skipped"
   exit 77

@@ -5,10 +5,13 @@
 #include <Eigen/LU>
 #include <cmath>
 
-#include "calibration_convert.hpp"
+#include "plumb/components/calibration_convert.hpp"
 #include "test_samples.hpp"
 
 namespace plumb::bridge {
+using components::calibration_problem;
+using components::to_model;
+using components::to_topic;
 namespace {
 
 topics::CalibrationCoefficients distinct_coefficients() {

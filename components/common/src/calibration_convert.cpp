@@ -1,10 +1,10 @@
-#include "calibration_convert.hpp"
+#include "plumb/components/calibration_convert.hpp"
 
 #include <cmath>
 
 #include <Eigen/LU>
 
-namespace plumb::bridge {
+namespace plumb::components {
 namespace {
 
 Eigen::Vector3d vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
@@ -79,4 +79,4 @@ std::string calibration_problem(const CalibrationModel& c) {
   return {};
 }
 
-}  // namespace plumb::bridge
+}  // namespace plumb::components

@@ -1,4 +1,4 @@
-# Small assertion helpers for the command-line integration tests.
+# Assertion helpers shared by the integration test scripts.
 fails=0
 pass() { echo "ok   - $*"; }
 fail() { echo "FAIL - $*"; fails=$((fails + 1)); }
@@ -12,5 +12,16 @@ expect_error() {
   if [ "$(printf '%s\n' "$err" | grep -c .)" -ne 1 ]; then fail "$what: expected one stderr line, got: $err"; return; fi
   if ! printf '%s' "$err" | grep -qE "$pattern"; then fail "$what: stderr '$err' lacks /$pattern/"; return; fi
   pass "$what: $err"
+}
+# expect_failure "description" "pattern" command...: non-zero exit, no crash, and the last stderr
+# line matching (for tools that may warn before they fail).
+expect_failure() {
+  local what=$1 pattern=$2; shift 2
+  local err rc=0
+  err=$("$@" 2>&1 >/dev/null) || rc=$?
+  if [ $rc -eq 0 ]; then fail "$what: exit 0 (expected an error)"; return; fi
+  if [ $rc -gt 128 ]; then fail "$what: killed by signal $((rc - 128))"; return; fi
+  if ! printf '%s' "$err" | grep -qE "$pattern"; then fail "$what: stderr '$err' lacks /$pattern/"; return; fi
+  pass "$what: $(printf '%s' "$err" | tail -1)"
 }
 finish() { if [ $fails -ne 0 ]; then echo "$fails check(s) failed"; exit 1; fi; echo "all checks passed"; }

@@ -7,7 +7,7 @@
 #include "plumb/core/calibration_model.hpp"
 #include "plumb/transport/messages.hpp"
 
-namespace plumb::bridge {
+namespace plumb::components {
 
 CalibrationModel to_model(const topics::CalibrationCoefficients& m);
 topics::CalibrationCoefficients to_topic(const CalibrationModel& model);
@@ -15,4 +15,4 @@ topics::CalibrationCoefficients to_topic(const CalibrationModel& model);
 // Why a received model cannot be applied (non-finite or singular coefficients), empty if it can.
 std::string calibration_problem(const CalibrationModel& model);
 
-}  // namespace plumb::bridge
+}  // namespace plumb::components
