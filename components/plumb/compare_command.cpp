@@ -86,7 +86,6 @@ int run(const CompareOptions& o) {
   }
   const auto result = compare::run_compare(c, progress_printer());
   compare::write_report(std::cout, result);
-  std::cout << result.records << " records in " << format_number(result.seconds) << " s\n";
   if (!o.csv_path.empty()) {
     std::ofstream f(o.csv_path);
     if (!f) throw std::runtime_error("cannot write '" + o.csv_path + "'");
