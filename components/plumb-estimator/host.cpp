@@ -8,6 +8,7 @@
 #include <map>
 
 #include "plumb/components/convert.hpp"
+#include "plumb/estimator/assignments.hpp"
 #include "plumb/estimator/loader.hpp"
 
 namespace plumb::components {
@@ -22,22 +23,6 @@ struct Plugin {
   std::uint64_t published = 0;
   std::uint64_t invalid = 0;
 };
-
-estimator::Parameters parameters_for(const estimator::Estimator& e, const HostOptions& o) {
-  estimator::Parameters p;
-  auto declares = [&](const std::string& key) {
-    for (const auto& spec : e.info().parameters)
-      if (spec.name == key) return true;
-    return false;
-  };
-  if (declares("window")) p["window"] = std::to_string(o.window_s);
-  for (const auto& kv : o.params) {
-    const auto eq = kv.find('=');
-    if (eq == std::string::npos || eq == 0) throw std::invalid_argument("--param '" + kv + "' is not KEY=VALUE");
-    if (declares(kv.substr(0, eq))) p[kv.substr(0, eq)] = kv.substr(eq + 1);
-  }
-  return p;
-}
 
 void print_estimate(const Estimate& e) {
   std::printf("%-12s t=%8.2f s  inc %8.4f deg  azi %8.3f deg  tf %7.2f deg  rpm %6.1f  %s%s%s\n", e.estimator.c_str(),
@@ -56,11 +41,13 @@ std::string host_name() {
 int run_host(const HostOptions& o) {
   if (o.window_s < 0) throw std::invalid_argument("--window must be >= 0");
   std::vector<Plugin> plugins;
+  std::vector<estimator::Info> infos;
   for (const auto& name : o.plugins) {
-    Plugin p{name, estimator::load_estimator(name), nullptr};
-    p.estimator->configure(parameters_for(*p.estimator, o));
-    plugins.push_back(std::move(p));
+    plugins.push_back({name, estimator::load_estimator(name), nullptr});
+    infos.push_back(plugins.back().estimator->info());
   }
+  const auto params = estimator::assign_parameters(infos, o.params, o.window_s);
+  for (std::size_t i = 0; i < plugins.size(); ++i) plugins[i].estimator->configure(params[i]);
   auto conn = connect(o.transport, "plumb-estimator");
   for (auto& p : plugins) {
     p.writer = std::make_unique<transport::Writer<topics::Attitude>>(transport::make_writer<topics::Attitude>(

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "plumb/core/csv.hpp"
+#include "plumb/estimator/assignments.hpp"
 #include "plumb/estimator/loader.hpp"
 
 namespace plumb::cli {
@@ -20,38 +21,13 @@ struct EstimateOptions {
   bool skip_bad_rows = false;
 };
 
-// KEY=VALUE pairs into parameters for each estimator that declares KEY; a key nobody declares is an error.
-std::vector<estimator::Parameters> assign_parameters(const std::vector<estimator::EstimatorPtr>& estimators,
-                                                     const EstimateOptions& o) {
-  std::vector<estimator::Parameters> out(estimators.size());
-  auto declares = [](const estimator::Estimator& e, const std::string& key) {
-    for (const auto& spec : e.info().parameters)
-      if (spec.name == key) return true;
-    return false;
-  };
-  for (std::size_t i = 0; i < estimators.size(); ++i) {
-    if (declares(*estimators[i], "window")) out[i]["window"] = std::to_string(o.window_s);
-  }
-  for (const auto& kv : o.params) {
-    const auto eq = kv.find('=');
-    if (eq == std::string::npos || eq == 0) throw std::invalid_argument("--param '" + kv + "' is not KEY=VALUE");
-    const std::string key = kv.substr(0, eq);
-    bool used = false;
-    for (std::size_t i = 0; i < estimators.size(); ++i) {
-      if (!declares(*estimators[i], key)) continue;
-      out[i][key] = kv.substr(eq + 1);
-      used = true;
-    }
-    if (!used) throw std::invalid_argument("--param '" + key + "': no selected estimator has that parameter (see plumb plugins -v)");
-  }
-  return out;
-}
-
 int run_estimate(const EstimateOptions& o) {
   if (o.window_s < 0) throw std::invalid_argument("--window must be >= 0 seconds (0: the whole file)");
   std::vector<estimator::EstimatorPtr> estimators;
   for (const auto& name : o.estimators) estimators.push_back(estimator::load_estimator(name));
-  const auto params = assign_parameters(estimators, o);
+  std::vector<estimator::Info> infos;
+  for (const auto& e : estimators) infos.push_back(e->info());
+  const auto params = estimator::assign_parameters(infos, o.params, o.window_s);
   for (std::size_t i = 0; i < estimators.size(); ++i) estimators[i]->configure(params[i]);
 
   std::ifstream in(o.input);

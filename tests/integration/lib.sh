@@ -10,7 +10,7 @@ expect_error() {
   if [ $rc -eq 0 ]; then fail "$what: exit 0 (expected an error)"; return; fi
   if [ $rc -gt 128 ]; then fail "$what: killed by signal $((rc - 128))"; return; fi
   if [ "$(printf '%s\n' "$err" | grep -c .)" -ne 1 ]; then fail "$what: expected one stderr line, got: $err"; return; fi
-  if ! printf '%s' "$err" | grep -qE "$pattern"; then fail "$what: stderr '$err' lacks /$pattern/"; return; fi
+  if ! printf '%s' "$err" | grep -qE -- "$pattern"; then fail "$what: stderr '$err' lacks /$pattern/"; return; fi
   pass "$what: $err"
 }
 # expect_failure "description" "pattern" command...: non-zero exit, no crash, and the last stderr
@@ -21,7 +21,7 @@ expect_failure() {
   err=$("$@" 2>&1 >/dev/null) || rc=$?
   if [ $rc -eq 0 ]; then fail "$what: exit 0 (expected an error)"; return; fi
   if [ $rc -gt 128 ]; then fail "$what: killed by signal $((rc - 128))"; return; fi
-  if ! printf '%s' "$err" | grep -qE "$pattern"; then fail "$what: stderr '$err' lacks /$pattern/"; return; fi
+  if ! printf '%s' "$err" | grep -qE -- "$pattern"; then fail "$what: stderr '$err' lacks /$pattern/"; return; fi
   pass "$what: $(printf '%s' "$err" | tail -1)"
 }
 finish() { if [ $fails -ne 0 ]; then echo "$fails check(s) failed"; exit 1; fi; echo "all checks passed"; }

@@ -41,6 +41,10 @@ expect_error "bad domain in the environment" "PLUMB_DOMAIN_ID" \
   env PLUMB_DOMAIN_ID=abc timeout 30 "$bin/plumb" topic list --wait 0
 expect_error "unknown estimator plugin" "nosuch.*(static|integral|compensated)" \
   timeout 30 "$bin/plumb-estimator" --plugin nosuch
+expect_error "estimator host: a parameter no plugin has" "--param 'windw'" \
+  timeout 30 "$bin/plumb-estimator" --plugin static --param windw=3
+expect_error "estimate: a parameter no plugin has" "--param 'windw'" \
+  timeout 30 "$bin/plumb" estimate --estimator static --input /dev/null --param windw=3
 expect_error "estimate: missing input" "cannot open" \
   timeout 30 "$bin/plumb" estimate --estimator compensated --input /nonexistent.csv
 

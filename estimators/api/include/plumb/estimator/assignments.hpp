@@ -1,0 +1,20 @@
+// Command-line parameters for several estimators at once: each KEY=VALUE goes to every selected
+// estimator that declares KEY, and `window` (when given) to every one that has a window.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "plumb/estimator/estimator.hpp"
+
+namespace plumb::estimator {
+
+bool declares_parameter(const Info& info, const std::string& name);
+
+// One Parameters per estimator, in order. Throws ParameterError for an assignment that is not
+// KEY=VALUE or whose KEY no estimator declares (a typo must not pass silently).
+std::vector<Parameters> assign_parameters(const std::vector<Info>& estimators, const std::vector<std::string>& assignments,
+                                          std::optional<double> window_s);
+
+}  // namespace plumb::estimator

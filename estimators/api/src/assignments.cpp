@@ -1,0 +1,32 @@
+#include "plumb/estimator/assignments.hpp"
+
+namespace plumb::estimator {
+
+bool declares_parameter(const Info& info, const std::string& name) {
+  for (const auto& spec : info.parameters)
+    if (spec.name == name) return true;
+  return false;
+}
+
+std::vector<Parameters> assign_parameters(const std::vector<Info>& estimators, const std::vector<std::string>& assignments,
+                                          std::optional<double> window_s) {
+  std::vector<Parameters> out(estimators.size());
+  for (std::size_t i = 0; i < estimators.size(); ++i) {
+    if (window_s && declares_parameter(estimators[i], "window")) out[i]["window"] = std::to_string(*window_s);
+  }
+  for (const auto& kv : assignments) {
+    const auto eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0) throw ParameterError("--param '" + kv + "' is not KEY=VALUE");
+    const std::string key = kv.substr(0, eq);
+    bool used = false;
+    for (std::size_t i = 0; i < estimators.size(); ++i) {
+      if (!declares_parameter(estimators[i], key)) continue;
+      out[i][key] = kv.substr(eq + 1);
+      used = true;
+    }
+    if (!used) throw ParameterError("--param '" + key + "': no selected estimator has that parameter (see plumb plugins -v)");
+  }
+  return out;
+}
+
+}  // namespace plumb::estimator
