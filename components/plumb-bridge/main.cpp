@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
 
 #include <CLI/CLI.hpp>
@@ -15,6 +16,7 @@
 #include "plumb/bridge/replay_source.hpp"
 #include "plumb/bridge/sample_checker.hpp"
 #include "plumb/components/cli.hpp"
+#include "plumb/components/import_options.hpp"
 #include "plumb/transport/topic_names.hpp"
 #include "publisher.hpp"
 
@@ -31,12 +33,13 @@ struct Options {
   std::string mode = "auto";
   std::string replay;
   std::string rate = "realtime";
+  components::ImportOptions import;
   bool strict = false;
   std::string calibration_file;
   bool no_calibration_topic = false;
   PublisherOptions publish{transport::topic_names::kSensorRaw, transport::topic_names::kSensorCalibrated,
-                           transport::topic_names::kCalibration, transport::topic_names::kStatus, "board", false,
-                           false};
+                           transport::topic_names::kCalibration, transport::topic_names::kStatus,
+                           BindingRule{"board"}};
   Limits limits;
   double status_period_s = 1.0;
   double backoff_min_s = 0.1;
@@ -58,11 +61,27 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--rate", o.rate, "replay pace: realtime, xN (N times faster) or max")->capture_default_str();
   app.add_flag("--strict", o.strict, "replay: stop with exit code 1 at the first bad row (default: count, go on)");
   device->excludes(replay);
+  components::add_import_options(app, o.import);
   app.add_option("--calibration", o.calibration_file, "coefficients file (docs/calibration.md) to apply from the start");
   app.add_flag("--no-calibration-topic", o.no_calibration_topic, "ignore coefficients published on plumb/calibration");
-  auto* tool = app.add_option("--tool-id", o.publish.tool_id,
-                              "tool id in the batches; when given, only coefficients for this tool are applied")
-                   ->capture_default_str();
+  app.add_option("--tool-id", o.publish.binding.tool_id,
+                 "this bridge's tool: put in the batches; only coefficients made for this tool id are applied")
+      ->capture_default_str();
+  app.add_flag("--calibration-any-tool", o.publish.binding.any_tool,
+               "apply coefficients made for another tool or for none (bench work; logged)");
+  app.add_option("--accel-units", o.publish.binding.accel_units,
+                 "units of the stream's accelerometer channels; coefficients made for other units are refused")
+      ->capture_default_str();
+  app.add_option("--mag-units", o.publish.binding.mag_units,
+                 "units of the stream's magnetometer channels; coefficients made for other units are refused")
+      ->capture_default_str();
+  app.add_option("--g", o.publish.g, "local gravity, m/s^2: the calibrated stream's |G| is checked against it")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--gravity-tolerance", o.publish.gravity_tolerance,
+                 "relative tolerance of that check; beyond it the calibrated stream stops")
+      ->check(CLI::Range(0.001, 0.9))
+      ->capture_default_str();
   app.add_option("--raw-topic", o.publish.raw_topic, "topic of raw batches")->capture_default_str();
   app.add_option("--calibrated-topic", o.publish.calibrated_topic, "topic of calibrated batches")->capture_default_str();
   app.add_flag("--reliable", o.publish.reliable, "reliable sensor topics (nothing lost) instead of best effort");
@@ -92,7 +111,6 @@ void add_options(CLI::App& app, Options& o) {
       ->capture_default_str();
   app.add_option("--max-logged-errors", o.max_logged_errors, "bad rows/lines printed; later ones are only counted")
       ->capture_default_str();
-  (void)tool;
 }
 
 std::string seconds_text(double s) {
@@ -114,17 +132,15 @@ std::string summary(const Counters& c) {
   return first ? std::string("nothing counted") : out.str();
 }
 
-void sleep_while_running(double seconds) {
-  const auto until = Clock::now() + std::chrono::duration<double>(seconds);
-  while (!components::g_stop && Clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(20));
-}
-
-int run(const Options& o, const CLI::App& app) {
+int run(const Options& o) {
   if (o.device.empty() == o.replay.empty()) throw std::invalid_argument("give either --device PATH or --replay FILE.csv");
   if (o.limits.accel_full_scale <= 0 || o.limits.mag_full_scale <= 0 || o.limits.gyro_full_scale <= 0 ||
       o.limits.temp_min_c >= o.limits.temp_max_c)
     throw std::invalid_argument("limits: full scales must be > 0 and --temp-min below --temp-max");
   if (o.backoff_min_s > o.backoff_max_s) throw std::invalid_argument("--backoff-min is above --backoff-max");
+  const csv::Import import = o.import.make();
+  if (!o.device.empty() && !csv::is_default(import))
+    throw std::invalid_argument("--column, --units and --axes apply to --replay files, not to --device");
 
   Counters counters;
   int logged_errors = 0;
@@ -137,9 +153,11 @@ int run(const Options& o, const CLI::App& app) {
   SampleChecker checker(counters, o.limits);
   std::unique_ptr<SampleSource> source;
   if (!o.replay.empty()) {
-    const double speed = parse_rate(o.rate);
-    source = std::make_unique<ReplaySource>(o.replay, speed, counters, o.strict,
-                                            [&](const csv::Error& e) { log_bad_input(std::string(e.what()) + " (row skipped)"); });
+    const double speed = components::parse_rate_option(o.rate);
+    source = std::make_unique<ReplaySource>(
+        o.replay, speed, counters, o.strict,
+        [&](const csv::Error& e) { log_bad_input(std::string(e.what()) + " (row skipped)"); }, import,
+        [](const std::string& warning) { std::cerr << kProgram << ": warning: " << warning << std::endl; });
   } else {
     SerialOptions serial;
     serial.path = o.device;
@@ -155,24 +173,28 @@ int run(const Options& o, const CLI::App& app) {
                                               }
                                               if (e == SerialPort::Event::OpenFailed)
                                                 log(what + "; retrying with back-off (" + seconds_text(o.backoff_min_s) + " s .. " +
-                                                    seconds_text(o.backoff_max_s) + " s)");
+                                                    seconds_text(o.backoff_max_s) + " s), reported again at attempts 2, 4, 8...");
                                             });
   }
 
   CalibrationModel file_model;
-  if (!o.calibration_file.empty()) file_model = read_calibration_file(o.calibration_file);
+  if (!o.calibration_file.empty()) {
+    file_model = read_calibration_file(o.calibration_file);
+    // Refused before anything starts: a bridge that would publish raw data only is not what was asked.
+    if (const auto problem = binding_problem(file_model, o.publish.binding); !problem.empty())
+      throw std::invalid_argument(o.calibration_file + ": " + problem);
+  }
 
   components::install_stop_handler();
   auto connection = components::connect(o.transport, kProgram);
   PublisherOptions po = o.publish;
-  po.match_tool_id = app.count("--tool-id") > 0;
   if (o.no_calibration_topic) po.calibration_topic.clear();
   Publisher publisher(*connection.participant, po, counters, log);
 
   log("reading " + source->describe() + " -> " + connection.transport->name() + " " + po.raw_topic + " and " +
       po.calibrated_topic + " (" + (po.reliable ? "reliable" : "best effort") + "), status on " + po.status_topic);
   if (!o.calibration_file.empty() && !publisher.set_calibration(file_model, o.calibration_file))
-    throw std::invalid_argument(o.calibration_file + ": coefficients cannot be applied");
+    throw std::runtime_error(o.calibration_file + ": coefficients cannot be applied");
   publisher.poll_calibration();
   if (!publisher.has_calibration())
     log("no calibration yet: raw data flows on " + po.raw_topic + "; " + po.calibrated_topic +
@@ -194,11 +216,25 @@ int run(const Options& o, const CLI::App& app) {
   std::uint64_t problems_at_last_status = 0;
   std::string last_error;
   bool source_alive = true;
+  // Silence is said at 5, 10, 20... s without a sample: what is read, and what could be wrong.
+  auto last_sample = started;
+  double next_silence_note_s = 5;
+  std::uint64_t total_samples = 0;
   try {
     while (!components::g_stop && source_alive) {
       samples.clear();
       source_alive = source->poll(samples, std::chrono::milliseconds(10));
       const auto now = Clock::now();
+      if (!samples.empty()) {
+        total_samples += samples.size();
+        last_sample = now;
+        next_silence_note_s = 5;
+      } else if (std::chrono::duration<double>(now - last_sample).count() > next_silence_note_s) {
+        log("no sample from " + source->describe() + " for " + std::to_string(static_cast<int>(next_silence_note_s)) +
+            " s (" + (source->healthy() ? "open; is the board sending, at this --baud?" : "not open") + "); " +
+            summary(counters));
+        next_silence_note_s *= 2;
+      }
       for (auto& s : samples) {
         if (checker.check(s) && batcher.add(s, now)) publisher.publish(batcher.take());
       }
@@ -220,17 +256,31 @@ int run(const Options& o, const CLI::App& app) {
     }
   } catch (const csv::Error& e) {  // --strict replay
     publisher.publish(batcher.take());
+    publisher.finish();
     publisher.publish_status("failed", e.what());
     log("stopped at the first bad row (--strict); " + summary(counters));
     throw;
   }
   publisher.publish(batcher.take());
+  publisher.finish();
   if (!source->last_error().empty()) last_error = source->last_error();
   publisher.publish_status("stopping", last_error);
   log(std::string(components::g_stop ? "interrupted" : "finished") + "; " + summary(counters));
-  if (po.reliable && !components::g_stop) sleep_while_running(o.linger_s);
+  if (po.reliable && !components::g_stop) components::sleep_while_running(o.linger_s);
   // Even after Ctrl-C: a writer deleted right after its last write may take that message with it.
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  // Raw data went out, but not the calibrated stream that was asked for: a script must not
+  // take this run for a good one.
+  if (publisher.calibrated_stopped()) {
+    components::print_error(kProgram, "the calibrated stream was stopped by the |G| check (above); only raw data was published");
+    return 1;
+  }
+  if (total_samples == 0) {
+    // Ended having published nothing: say it, and do not report success.
+    components::print_error(kProgram, "no sample read from " + source->describe() +
+                                          (last_error.empty() ? std::string() : " (" + last_error + ")"));
+    return 1;
+  }
   return 0;
 }
 
@@ -247,12 +297,15 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    return plumb::components::exit_on_parse_error(app, e);
+  }
+  if (options.publish.binding.tool_id.empty()) {  // a usage error: an empty id would bind to nothing
+    plumb::components::print_error(kProgram, "--tool-id must not be empty: coefficients bind to a tool id (docs/calibration.md)");
+    return 2;
   }
   try {
-    return run(options, app);
+    return run(options);
   } catch (const std::exception& e) {
-    plumb::components::print_error(kProgram, e.what());
-    return 1;
+    return plumb::components::exit_on_error(kProgram, e);
   }
 }

@@ -8,7 +8,9 @@
 
 #include "offline.hpp"
 #include "plumb/calibration/procedures.hpp"
+#include "plumb/calibration/triad_fit.hpp"
 #include "plumb/components/convert.hpp"
+#include "plumb/components/status_reporter.hpp"
 #include "plumb/transport/topic_names.hpp"
 #include "procedure.hpp"
 #include "simulated_turntable.hpp"
@@ -49,6 +51,8 @@ class StationDetector {
   }
   double start_s() const { return start_s_; }
   double end_s() const { return end_s_; }
+  // Raw accelerometer mean of the last reading of the station just recorded.
+  Eigen::Vector3d recorded_accel() const { return last_station_.head<3>(); }
 
  private:
   Reading close_block() const {
@@ -133,6 +137,25 @@ std::string prompt(const calibration::Orientation& o) {
   return s + " (" + o.label() + ")";
 }
 
+// The offline rule (check_orientations, same tolerance and message) applied to the stations
+// recorded so far and this one: empty when it may be recorded, else why not.
+std::string orientation_problem(std::vector<calibration::StationAverage>& recorded, const calibration::Station& st,
+                                const Eigen::Vector3d& accel) {
+  calibration::StationAverage candidate;
+  candidate.station = st;
+  candidate.accel = accel;
+  std::vector<const calibration::StationAverage*> all;
+  for (const auto& r : recorded) all.push_back(&r);
+  all.push_back(&candidate);
+  try {
+    calibration::check_orientations(all, calibration::CommonOptions{}.max_orientation_error_deg);
+  } catch (const calibration::CalibrationError& e) {
+    return e.what();
+  }
+  recorded.push_back(candidate);
+  return {};
+}
+
 }  // namespace
 
 int run_live(const Options& o) {
@@ -145,9 +168,18 @@ int run_live(const Options& o) {
   auto connection = components::connect(o.transport, "plumb-calibrate");
   auto reader = transport::make_reader<topics::SensorBatch>(*connection.participant, transport::topic_names::kSensorRaw,
                                                             transport::Qos::sensor_stream());
-  std::atomic<int> requested{0};
+  components::StatusReporter status(*connection.participant, "plumb-calibrate");
+  std::uint64_t received = 0, unusable = 0;
+  std::atomic<int> requested{0}, refused{0};
+  const auto counters = [&](int recorded) {
+    return components::CounterList{{"samples", received}, {"unusable_samples", unusable},
+                                   {"positions_recorded", static_cast<std::uint64_t>(recorded)},
+                                   {"positions_refused", static_cast<std::uint64_t>(refused.load())},
+                                   {"positions_total", plans.size()}};
+  };
   std::unique_ptr<SimulatedTurntable> turntable;
-  if (o.simulate_turntable) turntable = std::make_unique<SimulatedTurntable>(o, plans, requested);
+  if (o.simulate_turntable) turntable = std::make_unique<SimulatedTurntable>(o, plans, requested, refused);
+  std::vector<calibration::StationAverage> checked;  // raw accelerometer means of the recorded stations
 
   const int channels = procedure == calibration::Procedure::Magnetometer ? 6 : 3;
   StationDetector detector(channels, 1.0, o.station_s);
@@ -163,6 +195,7 @@ int run_live(const Options& o) {
   detector.begin_station(true);
   topics::SensorBatch batch;
   while (index < total) {
+    if (status.due()) status.publish("running", counters(index));
     if (components::g_stop) throw std::runtime_error("stopped before the procedure ended; nothing published");
     if (std::chrono::steady_clock::now() > deadline)
       throw std::runtime_error("timed out after " + std::to_string(static_cast<int>(o.timeout_s)) + " s waiting for position " +
@@ -172,7 +205,11 @@ int run_live(const Options& o) {
     while (index < total && reader.take(batch)) {
       for (const auto& m : batch.samples) {
         const Sample s = components::from_topic(m);
-        if ((s.flags & flags::kUnusable) || !s.f.allFinite()) continue;
+        ++received;
+        if ((s.flags & flags::kUnusable) || !s.f.allFinite()) {
+          ++unusable;
+          continue;
+        }
         if (!samples.empty() && s.t <= samples.back().t) continue;  // late or repeated batch
         samples.push_back(s);
         const auto ev = detector.push(s);
@@ -188,6 +225,14 @@ int run_live(const Options& o) {
           st.end_s = detector.end_s();
           st.orientation = calibration::parse_orientation(plan.orientation);
           st.run = plan.run;
+          if (const auto problem = orientation_problem(checked, st, detector.recorded_accel()); !problem.empty()) {
+            // Not recorded: the operator puts the tool right and the position is measured again.
+            std::printf("      NOT RECORDED: %s\n[%d/%d] %s\n", problem.c_str(), index + 1, total,
+                        prompt(st.orientation).c_str());
+            detector.begin_station(false);
+            ++refused;  // the simulated operator, if any, corrects the position
+            continue;
+          }
           stations.push_back(st);
           ++index;
           std::printf("      recorded %s [%.1f, %.1f] s (%d/%d done)\n", plan.name.c_str(), st.start_s, st.end_s, index,
@@ -205,6 +250,7 @@ int run_live(const Options& o) {
     }
   }
   turntable.reset();
+  status.publish("computing", counters(index));
   std::printf("all %d positions recorded; computing coefficients\n", total);
   const auto outcome = run_procedure(o, samples, stations);
   const int code = write_outputs(o, outcome);

@@ -5,7 +5,7 @@
 
 #include "plumb/calibration/procedures.hpp"
 #include "plumb/calibration/station_list.hpp"
-#include "plumb/core/csv.hpp"
+#include "plumb/csv/files.hpp"
 #include "procedure.hpp"
 
 namespace plumb::calibrate {
@@ -14,8 +14,18 @@ int run_offline(const Options& o) {
   if (o.input.empty() || o.stations.empty())
     throw std::runtime_error("offline calibration needs --input sensor.csv and --stations stations.csv (or --live)");
   calibration::parse_procedure(o.procedure);  // a wrong name fails before reading anything
-  const std::vector<Sample> samples = csv::read_sensor_file(o.input);
-  const auto stations = calibration::read_station_list(o.stations);
+  std::vector<Sample> samples;
+  std::vector<calibration::Station> stations;
+  try {
+    samples = csv::read_sensor_file(o.input);
+    stations = calibration::read_station_list(o.stations);
+  } catch (const std::exception& e) {
+    // The report is written whatever happens (docs/calibration.md): it says why there are no
+    // coefficients.
+    calibration::Outcome failed;
+    failed.error = e.what();
+    return write_outputs(o, failed);
+  }
   std::printf("%s: %zu samples, %zu stations, procedure %s\n", o.input.c_str(), samples.size(), stations.size(),
               o.procedure.c_str());
   const auto outcome = run_procedure(o, samples, stations);

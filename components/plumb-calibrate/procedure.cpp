@@ -26,10 +26,8 @@ std::string default_id(const Options& o) {
   return o.procedure + "-" + buf;
 }
 
-}  // namespace
-
-calibration::Outcome run_procedure(const Options& o, const std::vector<Sample>& samples,
-                                   const std::vector<calibration::Station>& stations) {
+calibration::Outcome run_chosen_procedure(const Options& o, const std::vector<Sample>& samples,
+                                          const std::vector<calibration::Station>& stations) {
   using namespace calibration;
   CommonOptions common;
   common.g = o.g;
@@ -38,6 +36,7 @@ calibration::Outcome run_procedure(const Options& o, const std::vector<Sample>& 
   common.tool_id = o.tool_id;
   common.calibration_id = default_id(o);
   common.stamp_s = static_cast<double>(std::time(nullptr));
+  common.max_error_deg = o.max_error_deg;
   const Procedure p = parse_procedure(o.procedure);
   common.settle = default_settle(p);
   switch (p) {
@@ -46,6 +45,7 @@ calibration::Outcome run_procedure(const Options& o, const std::vector<Sample>& 
     case Procedure::TwentyFourPosition: {
       TwentyFourOptions t;
       static_cast<CommonOptions&>(t) = common;
+      t.temperature_order = o.temperature_order;
       return twenty_four_position(samples, stations, t);
     }
     case Procedure::LeastSquares: {
@@ -62,6 +62,22 @@ calibration::Outcome run_procedure(const Options& o, const std::vector<Sample>& 
     }
   }
   return {};
+}
+
+}  // namespace
+
+calibration::Outcome run_procedure(const Options& o, const std::vector<Sample>& samples,
+                                   const std::vector<calibration::Station>& stations) {
+  calibration::Outcome outcome = run_chosen_procedure(o, samples, stations);
+  // The units of the package the coefficients are made for travel with them (docs/calibration.md
+  // 2.1); the typical simulated package sends volts and magnetometer counts (one made from
+  // --sim-truth sends whatever that file's coefficients expect: not stated).
+  const bool typical_sim = o.simulate_turntable && o.sim_truth.empty();
+  if (outcome.result) {
+    outcome.result->model.accel_units = !o.accel_units.empty() ? o.accel_units : typical_sim ? "V" : "";
+    outcome.result->model.mag_units = !o.mag_units.empty() ? o.mag_units : typical_sim ? "counts" : "";
+  }
+  return outcome;
 }
 
 int write_outputs(const Options& o, const calibration::Outcome& outcome) {
@@ -95,6 +111,12 @@ int write_outputs(const Options& o, const calibration::Outcome& outcome) {
 }
 
 void publish_coefficients(const Options& o, const CalibrationModel& model) {
+  // The topic carries the version-1 terms only: publishing version-2 coefficients would drop the
+  // sensors' temperature terms without a word.
+  if (model.format_version() > 1)
+    throw std::runtime_error("coefficients with version-2 temperature terms cannot be published on " +
+                             std::string(transport::topic_names::kCalibration) +
+                             " (the topic carries version 1); give the bridge the file (--calibration)");
   auto connection = components::connect(o.transport, "plumb-calibrate");
   auto writer = transport::make_writer<topics::CalibrationCoefficients>(
       *connection.participant, transport::topic_names::kCalibration, transport::Qos::calibration());
@@ -102,9 +124,7 @@ void publish_coefficients(const Options& o, const CalibrationModel& model) {
   std::printf("published coefficients '%s' on %s; staying %.0f s for late joiners\n", model.calibration_id.c_str(),
               transport::topic_names::kCalibration, o.linger_s);
   std::fflush(stdout);
-  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(o.linger_s);
-  while (!components::g_stop && std::chrono::steady_clock::now() < until)
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  components::sleep_while_running(o.linger_s);
 }
 
 }  // namespace plumb::calibrate

@@ -9,8 +9,8 @@
 namespace plumb::calibrate {
 
 SimulatedTurntable::SimulatedTurntable(const Options& o, std::vector<sim::StationPlan> plans,
-                                       const std::atomic<int>& requested)
-    : options_(o), plans_(std::move(plans)), requested_(requested),
+                                       const std::atomic<int>& requested, const std::atomic<int>& refused)
+    : options_(o), plans_(std::move(plans)), requested_(requested), refused_(refused),
       connection_(components::connect(o.transport, "plumb-calibrate-turntable")) {
   thread_ = std::thread([this] { run(); });
 }
@@ -29,13 +29,22 @@ void SimulatedTurntable::run() {
   rig.g = options_.g;
   rig.total_b = options_.total_field_ut;
   sim::TurntableStream stream(pkg, rig);
-  int current = -1;
+  int current = -1, corrections = 0;
   const auto wall_start = std::chrono::steady_clock::now();
   while (!stop_ && !components::g_stop) {
     const int want = requested_.load();
-    if (want != current && want >= 0 && want < static_cast<int>(plans_.size())) {
-      stream.move_to(plans_[static_cast<std::size_t>(want)]);
+    const int refusals = refused_.load();
+    if ((want != current || refusals != corrections) && want >= 0 && want < static_cast<int>(plans_.size())) {
+      auto plan = plans_[static_cast<std::size_t>(want)];
+      if (want + 1 == options_.sim_misplace && current != want) {
+        // The operator's mistake of issue 17: z pointing down whatever was asked (upside down if z
+        // down was asked).
+        plan.inclination_deg = plan.inclination_deg < 1 ? 180 : 0;
+        plan.toolface_deg = 0;
+      }
+      stream.move_to(plan);
       current = want;
+      corrections = refusals;
     }
     topics::SensorBatch batch;
     batch.tool_id = "sim-turntable";

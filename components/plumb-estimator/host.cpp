@@ -1,174 +1,178 @@
+// The host loop: subscription (samples per tool, sequence accounting) -> one runner (the plugins)
+// per tool id -> publication (attitude topics, each estimate with its tool's id), with the shared
+// status reporter.
 #include "host.hpp"
 
-#include <unistd.h>
-
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <memory>
 
-#include "plumb/components/convert.hpp"
-#include "plumb/estimator/assignments.hpp"
+#include "estimate_line.hpp"
+
+#include "plumb/components/status_reporter.hpp"
 #include "plumb/estimator/loader.hpp"
+#include "publication.hpp"
+#include "subscription.hpp"
+#include "truth_lookup.hpp"
 
 namespace plumb::components {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-struct Plugin {
-  std::string name;
-  estimator::EstimatorPtr estimator;
-  std::unique_ptr<transport::Writer<topics::Attitude>> writer;
-  std::uint64_t published = 0;
-  std::uint64_t invalid = 0;
-};
-
-void print_estimate(const Estimate& e) {
-  std::printf("%-12s t=%8.2f s  inc %8.4f deg  azi %8.3f deg  tf %7.2f deg  rpm %6.1f  %s%s%s\n", e.estimator.c_str(),
-              e.t_end, e.inclination_deg, e.azimuth_deg, e.gravity_toolface_deg, e.rpm, e.valid ? "valid" : "INVALID",
-              e.reason.empty() ? "" : ": ", e.reason.c_str());
+// With several tools on the topic each line names its tool (" tool 'T1'" at the end).
+void print_estimate(const Estimate& e, TruthLookup* truth, const std::string& tool_note) {
+  std::optional<topics::Truth> t;
+  if (truth) {
+    truth->update();
+    t = truth->at(e.t_end);
+  }
+  std::printf("%s%s\n", estimate_line(e, t).c_str(), tool_note.c_str());
   std::fflush(stdout);
 }
 
-std::string host_name() {
-  char buf[256] = {};
-  return gethostname(buf, sizeof buf - 1) == 0 ? buf : "unknown";
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Said when nothing arrives: what the host waits for, and which sensor topics do carry data.
+void explain_silence(transport::Participant& participant, const SensorSubscription& input, const std::string& topic,
+                     double silent_s) {
+  std::cerr << "plumb-estimator: nothing on " << topic << " for " << static_cast<int>(silent_s) << " s ("
+            << input.matched_writers() << " writer(s) matched)";
+  std::string others;
+  for (const auto& t : participant.discovered_topics()) {
+    if (t.name != topic && t.writers > 0 && t.name.starts_with(transport::topic_names::kSensorPrefix))
+      others += (others.empty() ? "" : ", ") + t.name;
+  }
+  if (!others.empty()) std::cerr << "; sensor data is published on " << others << " (choose it with --input)";
+  std::cerr << std::endl;
 }
 
 }  // namespace
 
 int run_host(const HostOptions& o) {
   if (o.window_s < 0) throw std::invalid_argument("--window must be >= 0");
-  std::vector<Plugin> plugins;
-  std::vector<estimator::Info> infos;
-  for (const auto& name : o.plugins) {
-    plugins.push_back({name, estimator::load_estimator(name), nullptr});
-    infos.push_back(plugins.back().estimator->info());
-  }
-  const auto params = estimator::assign_parameters(infos, o.params, o.window_s);
-  for (std::size_t i = 0; i < plugins.size(); ++i) plugins[i].estimator->configure(params[i]);
+  // One runner per tool id: the first is made now so that a bad plugin or parameter fails before
+  // anything runs; every further tool gets a copy made the same way.
+  const auto make_runner = [&] {
+    estimator::Runner r = estimator::load_runner(o.plugins);
+    r.configure(o.params, o.window_s);
+    return r;
+  };
+  estimator::Runner first_runner = make_runner();
+  std::map<std::string, estimator::Runner> runners;  // tool id -> its runner
   auto conn = connect(o.transport, "plumb-estimator");
-  for (auto& p : plugins) {
-    p.writer = std::make_unique<transport::Writer<topics::Attitude>>(transport::make_writer<topics::Attitude>(
-        *conn.participant, transport::topic_names::attitude(p.name), transport::Qos::attitude()));
-  }
-  auto reader = transport::make_reader<topics::SensorBatch>(
-      *conn.participant, o.input_topic, o.reliable ? transport::Qos::reliable_stream() : transport::Qos::sensor_stream());
-  auto status_writer =
-      transport::make_writer<topics::ComponentStatus>(*conn.participant, transport::topic_names::kStatus, transport::Qos::status());
+  EstimatePublication publication(*conn.participant);
+  for (const auto& slot : first_runner.slots()) publication.add(slot.name, slot.estimator->info().uses_gyro);
+  SensorSubscription input(*conn.participant, {o.input_topic, o.tool_id, o.reliable});
+  StatusReporter status(*conn.participant, "plumb-estimator");
+  std::unique_ptr<TruthLookup> truth;
+  if (o.compare_truth) truth = std::make_unique<TruthLookup>(*conn.participant, o.truth_topic);
   install_stop_handler();
 
-  std::cerr << "plumb-estimator: " << conn.transport->name() << ", reading " << o.input_topic << ", plugins:";
-  for (const auto& p : plugins) std::cerr << ' ' << p.name << " -> " << transport::topic_names::attitude(p.name);
+  std::cerr << "plumb-estimator: " << conn.transport->name() << ", reading " << o.input_topic
+            << (o.tool_id.empty() ? " (each tool separately)" : " (tool '" + o.tool_id + "' only)") << ", plugins:";
+  for (const auto& slot : first_runner.slots())
+    std::cerr << ' ' << slot.name << " -> " << transport::topic_names::attitude(slot.name);
   std::cerr << std::endl;
 
-  std::uint64_t batches = 0, samples = 0, seq_gaps = 0, lost_samples = 0, seq_backwards = 0;
-  bool have_seq = false;
-  std::uint64_t next_seq = 0;
-  std::string tool_id = o.tool_id;
-  std::string last_error;
-  const auto t0 = Clock::now();
-  auto last_sample_time = t0, last_status = t0;
-  bool pending = false;  // samples pushed since the last estimate or flush
-  std::vector<Sample> chunk;
-  std::vector<Estimate> estimates;
-
-  // Publishes what one plugin just produced.
-  auto publish = [&](Plugin& p) {
-    for (auto& e : estimates) {
-      if (e.estimator.empty()) e.estimator = p.name;
-      p.writer->write(to_topic(e, tool_id.empty() ? "unknown" : tool_id));
-      ++p.published;
-      if (!e.valid) ++p.invalid;
-      if (!o.quiet) print_estimate(e);
-    }
-    estimates.clear();
+  const auto runner_for = [&](const std::string& tool) -> estimator::Runner& {
+    auto it = runners.find(tool);
+    if (it != runners.end()) return it->second;
+    if (runners.empty()) return runners.emplace(tool, std::move(first_runner)).first->second;
+    return runners.emplace(tool, make_runner()).first->second;
   };
-  auto enough = [&] {
-    if (o.max_estimates <= 0) return false;
-    for (const auto& p : plugins)
-      if (p.published < static_cast<std::uint64_t>(o.max_estimates)) return false;
+  const auto publisher_for = [&](const std::string& tool) {
+    return [&, tool](const estimator::Runner::Slot&, Estimate& e) {
+      publication.publish(e, tool);
+      if (!o.quiet) print_estimate(e, truth.get(), input.tools() > 1 ? " tool '" + tool + "'" : std::string());
+    };
+  };
+  const auto counters = [&] {
+    CounterList all = input.counters();
+    // Summed over the tools, in the plugins' order: the per-plugin counters keep their names.
+    const std::size_t own = all.size();
+    if (runners.empty())
+      for (auto& c : first_runner.counters()) all.push_back(std::move(c));
+    for (const auto& [tool, runner] : runners)
+      for (auto& [name, value] : runner.counters()) {
+        auto it = std::find_if(all.begin() + static_cast<std::ptrdiff_t>(own), all.end(),
+                               [&](const auto& c) { return c.first == name; });
+        if (it == all.end()) all.emplace_back(name, value);
+        else it->second += value;
+      }
+    return all;
+  };
+  const auto enough = [&] {
+    if (o.max_estimates <= 0 || runners.empty()) return false;
+    for (const auto& [tool, runner] : runners)
+      for (const auto& slot : runner.slots())
+        if (slot.estimates < static_cast<std::uint64_t>(o.max_estimates)) return false;
     return true;
   };
-  auto send_status = [&](const std::string& state) {
-    topics::ComponentStatus s;
-    s.component = "plumb-estimator";
-    s.host = bounded(host_name(), topics::kHostMax);
-    s.state = state;
-    s.stamp_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
-    auto add = [&](const std::string& name, std::uint64_t v) {
-      if (s.counters.size() < 32) s.counters.push_back({bounded(name, topics::kNameMax), v});
-    };
-    add("batches", batches);
-    add("samples", samples);
-    add("seq_gaps", seq_gaps);
-    add("lost_samples", lost_samples);
-    add("seq_backwards", seq_backwards);
-    for (const auto& p : plugins) {
-      add(p.name + ".estimates", p.published);
-      add(p.name + ".invalid", p.invalid);
-      for (const auto& [reason, n] : p.estimator->counters()) add(p.name + "." + reason, n);
-    }
-    s.last_error = bounded(last_error, topics::kErrorMax);
-    status_writer.write(s);
-  };
 
-  send_status("running");
-  topics::SensorBatch batch;
-  while (!components::g_stop && !enough()) {
-    if (o.timeout_s > 0 && std::chrono::duration<double>(Clock::now() - t0).count() > o.timeout_s) {
-      send_status("failed");
+  const auto t0 = Clock::now();
+  auto last_sample_time = t0;
+  double next_silence_note_s = 5;
+  bool pending = false;  // samples pushed since the last estimate or flush
+  bool checked_gyro = false;
+  SensorSubscription::ToolChunks chunks;
+  status.publish("running", counters());
+  while (!g_stop && !enough()) {
+    if (o.timeout_s > 0 && seconds_since(t0) > o.timeout_s) {
+      status.publish("failed", counters(), "timed out");
       print_error("plumb-estimator", "timed out before " + std::to_string(o.max_estimates) + " estimates per plugin");
       return 1;
     }
-    reader.wait(std::chrono::milliseconds(100));
-    while (reader.take(batch)) {
-      ++batches;
-      if (tool_id.empty()) tool_id = batch.tool_id;
-      for (const auto& m : batch.samples) {
-        // The sensor stream is best-effort by default: count what the network lost.
-        if (have_seq && m.seq != next_seq) {
-          if (m.seq > next_seq) {
-            ++seq_gaps;
-            lost_samples += m.seq - next_seq;
-          } else {
-            ++seq_backwards;
-          }
+    input.wait(std::chrono::milliseconds(100));
+    if (input.take(chunks)) {
+      for (auto& [tool, chunk] : chunks) {
+        if (chunk.empty()) continue;
+        estimator::Runner& runner = runner_for(tool);
+        if (!checked_gyro) {
+          for (const auto& name : runner.needing_gyro())
+            if ((chunk.front().flags & flags::kHasGyro) == 0)
+              std::cerr << "plumb-estimator: " << name << " needs gyros, and " << o.input_topic << " carries none"
+                        << std::endl;
+          checked_gyro = true;
         }
-        have_seq = true;
-        next_seq = m.seq + 1;
-        chunk.push_back(from_topic(m));
+        runner.push(chunk, publisher_for(tool));
+        chunk.clear();
       }
-      samples += batch.samples.size();
-      for (auto& p : plugins) {
-        p.estimator->push(chunk, estimates);
-        publish(p);
-      }
-      chunk.clear();
       pending = true;
       last_sample_time = Clock::now();
+      next_silence_note_s = 5;
     }
-    const auto now = Clock::now();
-    if (pending && o.idle_flush_s > 0 && std::chrono::duration<double>(now - last_sample_time).count() > o.idle_flush_s) {
+    const double silent_s = seconds_since(last_sample_time);
+    if (pending && o.idle_flush_s > 0 && silent_s > o.idle_flush_s) {
       // The stream stopped: report what the open windows hold rather than keep it forever.
-      for (auto& p : plugins) {
-        p.estimator->flush(estimates);
-        publish(p);
-      }
+      for (auto& [tool, runner] : runners) runner.flush(publisher_for(tool));
       pending = false;
-      have_seq = false;
+      input.restart_sequence();
     }
-    if (std::chrono::duration<double>(now - last_status).count() >= 1.0) {
-      send_status("running");
-      last_status = now;
+    if (silent_s > next_silence_note_s) {
+      explain_silence(*conn.participant, input, o.input_topic, silent_s);
+      next_silence_note_s *= 2;  // 5, 10, 20, ... s: said, not shouted
     }
+    if (status.due()) status.publish("running", counters());
   }
-  send_status("stopping");
-  std::cerr << "plumb-estimator: " << batches << " batches, " << samples << " samples (" << lost_samples
-            << " lost in transit)";
-  for (const auto& p : plugins) std::cerr << ", " << p.name << ": " << p.published << " estimates";
+  status.publish("stopping", counters());
+  std::cerr << "plumb-estimator: " << input.batches() << " batches, " << input.samples() << " samples ("
+            << input.lost_samples() << " lost in transit)";
+  for (const auto& [tool, runner] : runners)
+    for (const auto& slot : runner.slots())
+      std::cerr << ", " << slot.name << (runners.size() > 1 ? " (tool '" + tool + "')" : std::string()) << ": "
+                << slot.estimates << " estimates";
   std::cerr << std::endl;
+  if (input.samples() == 0) {
+    // Stopped having received nothing: not a success, and the silence notes above said why.
+    print_error("plumb-estimator", "no sample received on " + o.input_topic + " (" +
+                                       std::to_string(input.matched_writers()) + " writer(s) matched)");
+    return 1;
+  }
+  if (enough()) sleep_while_running(o.linger_s);
   return 0;
 }
 

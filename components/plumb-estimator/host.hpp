@@ -6,6 +6,7 @@
 
 #include "plumb/components/cli.hpp"
 #include "plumb/transport/topic_names.hpp"
+#include "plumb/transport/transport.hpp"
 
 namespace plumb::components {
 
@@ -20,7 +21,10 @@ struct HostOptions {
   double idle_flush_s = 2;
   int max_estimates = 0;
   double timeout_s = 0;
+  double linger_s = 1;  // after --count is reached, so reliable readers get the last estimates
   bool quiet = false;
+  bool compare_truth = false;  // print each estimate's error against the simulator's truth
+  std::string truth_topic = transport::topic_names::kSimTruth;
 };
 
 int run_host(const HostOptions& options);

@@ -12,12 +12,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Sleeps in small steps so Ctrl-C stays responsive.
-void sleep_while_running(double seconds) {
-  const auto until = Clock::now() + std::chrono::duration<double>(seconds);
-  while (!components::g_stop && Clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(20));
-}
-
 }  // namespace
 
 DdsSink::DdsSink(const DdsSinkOptions& options) : options_(options) {
@@ -29,6 +23,12 @@ DdsSink::DdsSink(const DdsSinkOptions& options) : options_(options) {
     truth_.emplace(transport::make_writer<topics::Truth>(
         *connection_.participant, options_.truth_topic,
         options_.reliable ? transport::Qos::reliable_stream() : transport::Qos::attitude()));
+  // Drilling runs carry the rig's measured depth: its writer exists from the start, so that readers
+  // have matched before the first report.
+  depth_.emplace(transport::make_writer<topics::MeasuredDepth>(
+      *connection_.participant, transport::topic_names::kDepth,
+      transport::default_qos_for_topic(transport::topic_names::kDepth)));
+  status_.emplace(*connection_.participant, "plumb-sim");
 }
 
 std::string DdsSink::describe() const {
@@ -56,18 +56,29 @@ bool DdsSink::start() {
 }
 
 void DdsSink::write(const std::vector<Sample>& samples, const std::vector<TruthSample>& truth) {
+  // The depth goes first, so that a reader holds it when the batch it belongs to arrives.
+  if (!samples.empty() && (samples.back().flags & flags::kHasDepth) != 0) {
+    depth_->write(components::to_depth(samples.back(), options_.tool_id));
+    ++depth_messages_;
+  }
   topics::SensorBatch batch;
-  batch.tool_id = components::bounded(options_.tool_id, topics::kToolIdMax);
+  batch.tool_id = components::bounded(options_.tool_id, topics::Attitude::kToolIdMax);
   batch.samples.reserve(samples.size());
   for (const auto& s : samples) batch.samples.push_back(components::to_topic(s));
   sensor_->write(batch);
   ++batches_;
+  samples_ += samples.size();
+  if (status_->due())
+    status_->publish("running", {{"batches", batches_}, {"samples", samples_}, {"depth_messages", depth_messages_},
+                                 {"readers", sensor_->matched_readers()}});
   if (truth_ && !truth.empty()) truth_->write(components::to_topic(truth.back(), options_.tool_id));
 }
 
 void DdsSink::finish(bool interrupted) {
   // Reliable delivery of the last batches needs the writer alive until readers acknowledge.
-  if (!interrupted && batches_ > 0) sleep_while_running(options_.linger_s);
+  status_->publish(interrupted ? "stopping" : "finished",
+                   {{"batches", batches_}, {"samples", samples_}, {"depth_messages", depth_messages_}});
+  if (!interrupted && batches_ > 0) components::sleep_while_running(options_.linger_s);
 }
 
 }  // namespace plumb::sim_component

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "plumb/components/cli.hpp"
+#include "plumb/components/status_reporter.hpp"
 #include "plumb/transport/transport.hpp"
 #include "sink.hpp"
 
@@ -30,13 +31,16 @@ class DdsSink final : public Sink {
   void write(const std::vector<Sample>& samples, const std::vector<TruthSample>& truth) override;
   void finish(bool interrupted) override;
   std::uint64_t messages() const override { return batches_; }
+  bool carries_depth() const override { return true; }
 
  private:
   DdsSinkOptions options_;
   components::Connection connection_;
   std::optional<transport::Writer<topics::SensorBatch>> sensor_;
   std::optional<transport::Writer<topics::Truth>> truth_;
-  std::uint64_t batches_ = 0;
+  std::optional<transport::Writer<topics::MeasuredDepth>> depth_;  // created with the first depth
+  std::optional<components::StatusReporter> status_;
+  std::uint64_t batches_ = 0, samples_ = 0, depth_messages_ = 0;
 };
 
 }  // namespace plumb::sim_component

@@ -1,6 +1,7 @@
-// plumb-sim: the simulated rotating platform (sim/) as a component. Publishes sensor batches on
-// plumb/sensor/raw (or any sensor topic) and the truth on plumb/sim/truth, paced in real time,
-// or writes the same run as CSV files.
+// plumb-sim: the simulated rotating platform, a drilling run or a foot-mounted walk (sim/) as a
+// component. Publishes
+// sensor batches on plumb/sensor/raw (or any sensor topic) and the truth on plumb/sim/truth, paced
+// in real time, or writes the same run as CSV files.
 #include <algorithm>
 #include <iostream>
 #include <memory>
@@ -16,8 +17,9 @@
 #include "dds_sink.hpp"
 #include "pacing.hpp"
 #include "plumb/components/cli.hpp"
+#include "plumb/sim/drilling.hpp"
 #include "plumb/sim/platform.hpp"
-#include "plumb/transport/messages.hpp"
+#include "plumb/sim/walk.hpp"
 #include "plumb/transport/topic_names.hpp"
 #include "scenario_options.hpp"
 #include "serial_sink.hpp"
@@ -62,15 +64,17 @@ void add_output_options(CLI::App& app, OutputOptions& o) {
                  "(or into PATH if it is a serial device) instead of publishing; use --batch 1 for per-sample timing");
   app.add_option("--serial-baud", o.serial.baud, "baud rate when --serial names a real device")->capture_default_str();
   app.add_option("--serial-mode", o.serial.mode, "--serial protocol: binary or ascii")->capture_default_str();
-  app.add_flag("--loop", o.loop, "keep simulating past the duration until Ctrl-C (platform keeps turning)");
+  app.add_flag("--loop", o.loop,
+               "keep simulating past the duration until Ctrl-C (the platform keeps turning; a drilling tool or a "
+               "walking foot stays still where its run ended)");
 }
 
-std::unique_ptr<Sink> make_sink(const OutputOptions& o, const sim::Scenario& scenario) {
+std::unique_ptr<Sink> make_sink(const OutputOptions& o, const std::string& tool_id, const CsvColumns& columns) {
   if (!o.csv_dir.empty() && !o.serial.path.empty()) throw std::invalid_argument("give --csv or --serial, not both");
-  if (!o.csv_dir.empty()) return std::make_unique<CsvSink>(o.csv_dir, scenario.with_gyro);
+  if (!o.csv_dir.empty()) return std::make_unique<CsvSink>(o.csv_dir, columns);
   if (!o.serial.path.empty()) return std::make_unique<SerialSink>(o.serial);
-  const auto type = transport::topic_type_for(o.topic);
-  if (type && *type != transport::TopicType::SensorBatch)
+  const auto* type = transport::topic_type_for(o.topic);
+  if (type && *type != topics::type_support<topics::SensorBatch>())
     throw std::invalid_argument("--topic " + o.topic + " is not a sensor topic (expected plumb/sensor/...)");
   DdsSinkOptions d;
   d.transport = o.transport;
@@ -79,7 +83,7 @@ std::unique_ptr<Sink> make_sink(const OutputOptions& o, const sim::Scenario& sce
   d.reliable = o.reliable;
   d.wait_subscribers_s = o.wait_subscribers_s;
   d.linger_s = o.linger_s;
-  d.tool_id = scenario.tool_id;
+  d.tool_id = tool_id;
   return std::make_unique<DdsSink>(d);
 }
 
@@ -96,14 +100,16 @@ struct RunResult {
   std::uint64_t batches = 0;
 };
 
-RunResult run(sim::PlatformSimulator& simulator, Sink& sink, double speed, std::size_t batch_size, bool loop) {
+// Simulator: PlatformSimulator, DrillingSimulator or WalkSimulator (next, done).
+template <typename Simulator>
+RunResult run(Simulator& simulator, double rate_hz, Sink& sink, double speed, std::size_t batch_size, bool loop) {
   Pacer pacer(sink.paced() ? speed : 0.0);
   RunResult result;
   std::vector<Sample> samples;
   std::vector<TruthSample> truth;
   samples.reserve(batch_size);
   truth.reserve(batch_size);
-  const double period = 1.0 / simulator.scenario().sample_rate_hz;
+  const double period = 1.0 / rate_hz;
   while (!components::g_stop && (loop || !simulator.done())) {
     samples.clear();
     truth.clear();
@@ -122,9 +128,42 @@ RunResult run(sim::PlatformSimulator& simulator, Sink& sink, double speed, std::
   return result;
 }
 
+// One simulator, its sink and its log lines, for either kind of run.
+template <typename Simulator>
+int simulate(Simulator& simulator, const std::string& description, double rate_hz, const std::string& tool_id,
+             const CsvColumns& columns, const OutputOptions& output_options) {
+  const double speed = components::parse_rate_option(output_options.rate);
+  if (output_options.loop && !output_options.csv_dir.empty())
+    throw std::invalid_argument("--loop cannot be used with --csv (the files would never end)");
+  if (simulator.sample_count() == 0 && !output_options.loop)
+    throw std::invalid_argument("the scenario has no samples (duration x rate < 1)");
+
+  components::install_stop_handler();
+  auto sink = make_sink(output_options, tool_id, columns);
+  std::cout << kProgram << ": simulating " << description << " -> " << sink->describe() << ", "
+            << pacing_text(sink->paced() ? speed : 0.0) << (output_options.loop ? ", looping until Ctrl-C" : "")
+            << std::endl;
+  if (columns.depth && !sink->carries_depth())
+    std::cout << kProgram << ": the measured depth is not carried by " << sink->describe() << "; use --csv for it"
+              << std::endl;
+  if (!sink->start()) {
+    std::cout << kProgram << ": stopped before starting" << std::endl;
+    return 0;
+  }
+  const RunResult result = run(simulator, rate_hz, *sink, speed, static_cast<std::size_t>(output_options.batch),
+                               output_options.loop);
+  const bool interrupted = components::g_stop;
+  sink->finish(interrupted);
+  std::cout << kProgram << ": " << (interrupted ? "stopped; " : "done; ") << result.samples << " samples in "
+            << result.batches << " batches to " << sink->describe() << std::endl;
+  return 0;
+}
+
 int run_main(int argc, char** argv) {
-  CLI::App app{"plumb-sim: simulated rotating sensor platform (accelerometers, magnetometers, gyros) publishing "
-               "sensor batches and the truth over DDS, or writing them as CSV"};
+  CLI::App app{"plumb-sim: simulated rotating sensor platform (accelerometers, magnetometers, gyros), or a drilling "
+               "run for the strapdown navigator (--scenario drilling: gyros, measured depth, truth position), or a "
+               "foot-mounted IMU walking a closed loop (--scenario walk: gyros, truth position), publishing sensor "
+               "batches and the truth over DDS, or writing them as CSV"};
   app.name(kProgram);
   ScenarioOptions scenario_options;
   OutputOptions output_options;
@@ -133,37 +172,31 @@ int run_main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    return plumb::components::exit_on_parse_error(app, e);
   }
 
   try {
+    if (is_drilling(scenario_options)) {
+      const sim::DrillingScenario scenario = make_drilling_scenario(app, scenario_options);
+      sim::DrillingSimulator simulator(scenario);
+      const CsvColumns columns{true, false, scenario.depth.present, true};
+      return simulate(simulator, sim::describe(scenario), scenario.sample_rate_hz, scenario.tool_id, columns,
+                      output_options);
+    }
+    if (is_walk(scenario_options)) {
+      const sim::WalkScenario scenario = make_walk_scenario(app, scenario_options);
+      sim::WalkSimulator simulator(scenario);
+      const CsvColumns columns{true, false, false, true};
+      return simulate(simulator, sim::describe(scenario), scenario.sample_rate_hz, scenario.tool_id, columns,
+                      output_options);
+    }
     const sim::Scenario scenario = make_scenario(app, scenario_options);
     sim::PlatformSimulator simulator(scenario);
-    const double speed = parse_speed(output_options.rate);
-    if (output_options.loop && !output_options.csv_dir.empty())
-      throw std::invalid_argument("--loop cannot be used with --csv (the files would never end)");
-    if (simulator.sample_count() == 0 && !output_options.loop)
-      throw std::invalid_argument("the scenario has no samples (duration x rate < 1)");
-
-    components::install_stop_handler();
-    auto sink = make_sink(output_options, scenario);
-    std::cout << kProgram << ": simulating " << sim::describe(scenario) << " -> " << sink->describe() << ", "
-              << pacing_text(sink->paced() ? speed : 0.0) << (output_options.loop ? ", looping until Ctrl-C" : "")
-              << std::endl;
-    if (!sink->start()) {
-      std::cout << kProgram << ": stopped before starting" << std::endl;
-      return 0;
-    }
-    const RunResult result =
-        run(simulator, *sink, speed, static_cast<std::size_t>(output_options.batch), output_options.loop);
-    const bool interrupted = components::g_stop;
-    sink->finish(interrupted);
-    std::cout << kProgram << ": " << (interrupted ? "stopped; " : "done; ") << result.samples << " samples in "
-              << result.batches << " batches to " << sink->describe() << std::endl;
-    return 0;
+    const CsvColumns columns{scenario.with_gyro, true, false, false};
+    return simulate(simulator, sim::describe(scenario), scenario.sample_rate_hz, scenario.tool_id, columns,
+                    output_options);
   } catch (const std::exception& e) {
-    components::print_error(kProgram, e.what());
-    return 1;
+    return components::exit_on_error(kProgram, e);
   }
 }
 

@@ -6,9 +6,6 @@
 
 namespace plumb::sim_component {
 
-// Speed factor from its text; 0 means as fast as possible. Throws std::invalid_argument.
-double parse_speed(const std::string& text);
-
 class Pacer {
  public:
   explicit Pacer(double speed) : speed_(speed) {}

@@ -69,7 +69,10 @@ std::string SerialSink::describe() const {
 }
 
 bool SerialSink::write_bytes(const std::vector<std::uint8_t>& bytes) {
-  const auto timeout = std::chrono::milliseconds(static_cast<long long>(options_.write_timeout_s * 1000));
+  // Once the line is full and nobody reads, do not wait again: a board keeps its clock, so the run
+  // keeps its pace and --duration holds (the README runs `plumb-sim --serial ... --duration 60 &`).
+  const auto timeout = reader_absent_ ? std::chrono::milliseconds(0)
+                                      : std::chrono::milliseconds(static_cast<long long>(options_.write_timeout_s * 1000));
   if (pty_) return pty_->write_all(bytes.data(), bytes.size(), timeout);
   const std::uint8_t* p = bytes.data();
   std::size_t left = bytes.size();
@@ -101,19 +104,26 @@ void SerialSink::write(const std::vector<Sample>& samples, const std::vector<Tru
     buffer_.assign(text.begin(), text.end());
   }
   if (write_bytes(buffer_)) {
+    if (reader_absent_)
+      std::cerr << "plumb-sim: serial " << options_.path << ": a reader is back; " << dropped_
+                << " samples dropped so far" << std::endl;
+    reader_absent_ = false;
     frames_ += samples.size();
     return;
   }
-  // Nobody reads the line: like a real board, the samples are gone. Said once, counted.
-  if (dropped_ == 0)
-    std::cerr << "plumb-sim: serial " << options_.path << ": nobody reads the line; dropping samples" << std::endl;
+  // Nobody reads the line: like a real board, the samples are gone. Said when it starts, counted,
+  // and the count is given at the end.
+  if (!reader_absent_)
+    std::cerr << "plumb-sim: serial " << options_.path << ": nobody reads the line; dropping samples until a reader "
+              << "comes (start plumb-bridge --device " << options_.path << ")" << std::endl;
+  reader_absent_ = true;
   dropped_ += samples.size();
 }
 
 void SerialSink::finish(bool interrupted) {
   // Let the bridge read what is still in the line before the device disappears.
-  if (pty_ && !interrupted) pty_->drain(std::chrono::milliseconds(static_cast<long long>(options_.write_timeout_s * 1000)));
-  if (device_fd_ >= 0 && !interrupted) ::tcdrain(device_fd_);
+  if (pty_ && !interrupted && !reader_absent_) pty_->drain(std::chrono::milliseconds(static_cast<long long>(options_.write_timeout_s * 1000)));
+  if (device_fd_ >= 0 && !interrupted && !reader_absent_) ::tcdrain(device_fd_);
   std::cout << "plumb-sim: serial " << options_.path << ": " << frames_ << " samples written"
             << (dropped_ ? ", " + std::to_string(dropped_) + " dropped (no reader)" : std::string()) << std::endl;
 }

@@ -35,6 +35,7 @@ class SerialSink final : public Sink {
   std::unique_ptr<bridge::PseudoTerminal> pty_;
   int device_fd_ = -1;  // when PATH is a real device
   bool header_sent_ = false;
+  bool reader_absent_ = false;  // the last write timed out: write without waiting until one succeeds
   std::uint64_t frames_ = 0;
   std::uint64_t dropped_ = 0;
   std::vector<std::uint8_t> buffer_;

@@ -18,7 +18,7 @@ class Sink {
   virtual std::string describe() const = 0;
   // Before the first batch; may wait (bounded) for consumers. Returns false if the run must stop.
   virtual bool start() { return true; }
-  // One batch (at most topics::kMaxSamplesPerBatch samples) and the truth of each sample.
+  // One batch (at most topics::SensorBatch::kSamplesMax samples) and the truth of each sample.
   virtual void write(const std::vector<Sample>& samples, const std::vector<TruthSample>& truth) = 0;
   // After the last batch (also after Ctrl-C): flush, let reliable readers catch up.
   virtual void finish(bool interrupted) { (void)interrupted; }
@@ -26,6 +26,9 @@ class Sink {
   virtual bool paced() const { return true; }
   // How many messages carried the batches (DDS: one per batch; files: zero).
   virtual std::uint64_t messages() const { return 0; }
+  // Whether write() delivers the measured depth of samples flagged flags::kHasDepth (drilling runs):
+  // the CSV's depth_m column does; a sink that drops it keeps false, and plumb-sim says so at start.
+  virtual bool carries_depth() const { return false; }
 };
 
 }  // namespace plumb::sim_component

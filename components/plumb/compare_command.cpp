@@ -7,8 +7,10 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "plumb/components/cli.hpp"
 #include "fields.hpp"
 #include "plumb/compare/compare.hpp"
+#include "plumb/compare/drilling.hpp"
 
 namespace plumb::cli {
 namespace {
@@ -30,6 +32,11 @@ struct CompareOptions {
   std::vector<std::string> params;
   std::string plots_dir;
   std::string csv_path;
+  std::string scenario = "platform";
+  std::vector<std::string> grades{"tactical", "mems"};
+  std::vector<double> drilling_rates{100, 10};
+  std::string depth = "both";
+  bool no_magnetometer = false;
 };
 
 Eigen::Vector3d parse_vector(const std::string& text, const std::string& option) {
@@ -57,6 +64,37 @@ compare::ProgressCallback progress_printer() {
   };
 }
 
+// The navigator on the simulator's drilling runs (issue 8): per run, errors beside the source's figures.
+int run_drilling(const CompareOptions& o, bool estimators_given) {
+  compare::DrillingCompareConfig c;
+  if (estimators_given) {
+    if (o.estimators.size() != 1) throw std::invalid_argument("--scenario drilling takes one --estimator (a navigator)");
+    c.plugin = o.estimators.front();
+  }
+  c.grades = o.grades;
+  c.rates_hz = o.drilling_rates;
+  if (o.depth == "both") c.with_depth = {true, false};
+  else if (o.depth == "yes") c.with_depth = {true};
+  else if (o.depth == "no") c.with_depth = {false};
+  else throw std::invalid_argument("--depth takes yes, no or both");
+  c.magnetometer = !o.no_magnetometer;
+  if (o.seeds < 1) throw std::invalid_argument("--seeds must be at least 1");
+  c.seeds = o.seeds;
+  c.base_seed = o.seed;
+  c.assignments = o.params;
+  const auto runs = compare::run_drilling_compare(c);
+  compare::write_drilling_report(std::cout, runs);
+  if (!o.plots_dir.empty()) {
+    std::filesystem::create_directories(o.plots_dir);
+    const std::string path = o.plots_dir + "/drilling_errors.svg";
+    std::ofstream f(path);
+    if (!f) throw std::runtime_error("cannot write '" + path + "'");
+    compare::write_drilling_plot(f, runs);
+    std::cerr << "plumb compare: wrote " << path << '\n';
+  }
+  return 0;
+}
+
 int run(const CompareOptions& o) {
   compare::CompareConfig c;
   c.plugins = o.estimators;
@@ -77,13 +115,7 @@ int run(const CompareOptions& o) {
   if (!o.profile.empty()) c.base.rotation = sim::parse_profile(o.profile);
   if (!o.accel_bias.empty()) c.base.accel_errors.bias = parse_vector(o.accel_bias, "--accel-bias");
   if (!o.mag_bias.empty()) c.base.mag_errors.bias = parse_vector(o.mag_bias, "--mag-bias");
-  for (const auto& kv : o.params) {
-    const auto eq = kv.find('=');
-    const auto dot = kv.find('.');
-    if (eq == std::string::npos || dot == std::string::npos || dot > eq)
-      throw std::invalid_argument("--param '" + kv + "' is not PLUGIN.KEY=VALUE");
-    c.plugin_parameters[kv.substr(0, dot)][kv.substr(dot + 1, eq - dot - 1)] = kv.substr(eq + 1);
-  }
+  c.assignments = o.params;
   const auto result = compare::run_compare(c, progress_printer());
   compare::write_report(std::cout, result);
   if (!o.csv_path.empty()) {
@@ -116,7 +148,7 @@ void add_compare_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("compare",
                                  "Run estimator plugins over a grid of simulated scenarios (default: the source paper's "
                                  "reference grid) and print RMS and maximum errors beside the Cramér–Rao bound");
-  cmd->add_option("-e,--estimator", o->estimators, "plugins to compare")->capture_default_str();
+  cmd->add_option("-e,--estimator,--plugin", o->estimators, "plugins to compare (--plugin, as for plumb-estimator, is the same)")->capture_default_str();
   cmd->add_option("--inclination", o->inclinations, "inclinations, deg")->capture_default_str();
   cmd->add_option("--rpm", o->rpms, "platform speeds, rpm")->capture_default_str();
   cmd->add_option("--snr-accel", o->snr_accel, "accelerometer SNRs, dB (CONVENTIONS.md)")->capture_default_str();
@@ -132,10 +164,22 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("--dip", o->dip, "dip, deg")->capture_default_str();
   cmd->add_option("--accel-bias", o->accel_bias, "accelerometer bias x,y,z, m/s^2");
   cmd->add_option("--mag-bias", o->mag_bias, "magnetometer bias x,y,z, uT");
-  cmd->add_option("-p,--param", o->params, "plugin parameter PLUGIN.KEY=VALUE");
+  components::add_param_option(*cmd, o->params);
   cmd->add_option("--plots", o->plots_dir, "write SVG plots of error versus azimuth per inclination into this folder");
   cmd->add_option("--csv", o->csv_path, "also write the table as CSV");
-  cmd->callback([o] { g_exit_code = run(*o); });
+  cmd->add_option("--scenario", o->scenario,
+                  "platform: the rotating-platform grid; drilling: 16-minute drilling runs through a navigator "
+                  "(default estimator strapdown), beside the gyro inclinometer source's figures")
+      ->check(CLI::IsMember({"platform", "drilling"}))
+      ->capture_default_str();
+  cmd->add_option("--grade", o->grades, "drilling: IMU grades (navigation, tactical, mems, perfect)")->capture_default_str();
+  cmd->add_option("--drilling-rate-hz", o->drilling_rates, "drilling: sampling rates, Hz")->capture_default_str();
+  cmd->add_option("--depth", o->depth, "drilling: with measured depth (yes), without (no), or both")->capture_default_str();
+  cmd->add_flag("--no-magnetometer", o->no_magnetometer, "drilling: the tool has no magnetometer");
+  auto* estimator_option = cmd->get_option("--estimator");
+  cmd->callback([o, estimator_option] {
+    g_exit_code = o->scenario == "drilling" ? run_drilling(*o, estimator_option->count() > 0) : run(*o);
+  });
 }
 
 }  // namespace plumb::cli

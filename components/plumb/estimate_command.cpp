@@ -1,12 +1,12 @@
 // plumb estimate: the estimator host's work offline, sensor CSV in, attitude CSV out.
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <memory>
 
 #include "commands.hpp"
-#include "plumb/core/csv.hpp"
-#include "plumb/estimator/assignments.hpp"
+#include "plumb/components/cli.hpp"
+#include "plumb/components/import_options.hpp"
+#include "plumb/csv/files.hpp"
 #include "plumb/estimator/loader.hpp"
 
 namespace plumb::cli {
@@ -19,20 +19,25 @@ struct EstimateOptions {
   double window_s = 0;
   std::vector<std::string> params;
   bool skip_bad_rows = false;
+  components::ImportOptions import;
 };
 
 int run_estimate(const EstimateOptions& o) {
   if (o.window_s < 0) throw std::invalid_argument("--window must be >= 0 seconds (0: the whole file)");
-  std::vector<estimator::EstimatorPtr> estimators;
-  for (const auto& name : o.estimators) estimators.push_back(estimator::load_estimator(name));
-  std::vector<estimator::Info> infos;
-  for (const auto& e : estimators) infos.push_back(e->info());
-  const auto params = estimator::assign_parameters(infos, o.params, o.window_s);
-  for (std::size_t i = 0; i < estimators.size(); ++i) estimators[i]->configure(params[i]);
+  estimator::Runner runner = estimator::load_runner(o.estimators);
+  runner.configure(o.params, o.window_s);
+  const csv::Import import = o.import.make();
 
   std::ifstream in(o.input);
   if (!in) throw std::runtime_error("cannot open input '" + o.input + "'");
-  csv::SensorReader reader(in, o.input);
+  csv::SensorReader reader(in, o.input, import);
+  if (!csv::is_default(import)) std::cerr << "plumb estimate: reading " << o.input << " with " << csv::describe(import) << '\n';
+  if (!reader.has_gyro()) {
+    for (const auto& name : runner.needing_gyro())
+      throw std::invalid_argument("estimator '" + name + "' needs gyros, and " + o.input + " has no wx, wy, wz columns");
+  }
+  bool navigation = false;
+  for (const auto& info : runner.infos()) navigation = navigation || info.uses_gyro;
 
   std::ofstream file;
   if (!o.output.empty()) {
@@ -40,25 +45,19 @@ int run_estimate(const EstimateOptions& o) {
     if (!file) throw std::runtime_error("cannot write output '" + o.output + "'");
   }
   std::ostream& out = o.output.empty() ? std::cout : file;
-  csv::write_attitude_header(out);
+  csv::write_attitude_header(out, navigation);
+  const auto write = [&](const estimator::Runner::Slot&, Estimate& e) { csv::write_attitude_row(out, e, navigation); };
 
   std::vector<Sample> chunk;
-  std::vector<Estimate> estimates;
   std::size_t rows = 0, bad_rows = 0;
-  std::map<std::string, std::pair<std::size_t, std::size_t>> tally;  // estimator -> (estimates, invalid)
-  auto emit = [&] {
-    for (const auto& e : estimates) {
-      csv::write_attitude_row(out, e);
-      auto& t = tally[e.estimator];
-      ++t.first;
-      if (!e.valid) ++t.second;
+  bool units_checked = false;
+  // The first chunk is the start of the file: seconds of data, enough to tell g from m/s^2.
+  const auto push = [&] {
+    if (!units_checked) {
+      for (const auto& warning : csv::check_units(chunk, import)) std::cerr << "plumb estimate: warning: " << warning << '\n';
+      units_checked = true;
     }
-    estimates.clear();
-  };
-  auto feed = [&] {
-    for (auto& est : estimators) est->push(chunk, estimates);
-    emit();
-    chunk.clear();
+    runner.push(chunk, write);
   };
   while (true) {
     Sample s;
@@ -72,20 +71,21 @@ int run_estimate(const EstimateOptions& o) {
     }
     ++rows;
     chunk.push_back(s);
-    if (chunk.size() == 1024) feed();
+    if (chunk.size() == 1024) {
+      push();
+      chunk.clear();
+    }
   }
-  feed();
-  for (auto& est : estimators) est->flush(estimates);
-  emit();
+  push();
+  runner.flush(write);
   out.flush();
 
   std::cerr << "plumb estimate: " << rows << " samples from " << o.input;
   if (bad_rows) std::cerr << " (" << bad_rows << " bad rows skipped)";
   std::cerr << '\n';
-  for (const auto& est : estimators) {
-    const auto& t = tally[est->info().name];
-    std::cerr << "  " << est->info().name << ": " << t.first << " estimate(s), " << t.second << " invalid";
-    for (const auto& [reason, n] : est->counters()) std::cerr << ", " << n << " " << reason;
+  for (const auto& slot : runner.slots()) {
+    std::cerr << "  " << slot.name << ": " << slot.estimates << " estimate(s), " << slot.invalid << " invalid";
+    for (const auto& [reason, n] : slot.estimator->counters()) std::cerr << ", " << n << " " << reason;
     std::cerr << '\n';
   }
   return 0;
@@ -96,12 +96,13 @@ int run_estimate(const EstimateOptions& o) {
 void add_estimate_command(CLI::App& app) {
   auto o = std::make_shared<EstimateOptions>();
   auto* cmd = app.add_subcommand("estimate", "Run estimator plugins offline on a sensor CSV; write an attitude CSV");
-  cmd->add_option("-e,--estimator", o->estimators, "estimator plugin name (repeat to run several side by side)")->required();
+  cmd->add_option("-e,--estimator,--plugin", o->estimators, "estimator plugin name (repeat to run several side by side; --plugin, as for plumb-estimator, is the same)")->required();
   cmd->add_option("-i,--input", o->input, "sensor CSV (CONVENTIONS.md format)")->required();
   cmd->add_option("-o,--output", o->output, "attitude CSV to write (default: standard output)");
   cmd->add_option("-w,--window", o->window_s, "window length in seconds; 0 = the whole file (one row)")->capture_default_str();
-  cmd->add_option("-p,--param", o->params, "plugin parameter KEY=VALUE (see plumb plugins -v)");
+  components::add_param_option(*cmd, o->params);
   cmd->add_flag("--skip-bad-rows", o->skip_bad_rows, "report and skip bad CSV rows instead of stopping");
+  components::add_import_options(*cmd, o->import);
   cmd->callback([o] { g_exit_code = run_estimate(*o); });
 }
 

@@ -10,6 +10,13 @@ std::string format_number(double v) {
   return buf;
 }
 
+std::string format_measured(double v) {
+  if (!std::isfinite(v)) return format_number(v);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> parts;
   std::size_t start = 0;

@@ -15,7 +15,9 @@
 #include <utility>
 #include <vector>
 
-#include "plumb/transport/messages.hpp"
+#include "flag_names.hpp"
+#include "plumb/core/number.hpp"
+#include "plumb/topics/all.hpp"
 
 namespace plumb::cli {
 
@@ -25,6 +27,8 @@ template <class T> struct is_vector : std::false_type {};
 template <class T> struct is_vector<std::vector<T>> : std::true_type {};
 
 std::string format_number(double v);
+// Four significant digits, for measured figures (rates, periods) whose last digits are noise.
+std::string format_measured(double v);
 
 template <class T> std::string scalar_text(const T& v) {
   if constexpr (std::is_same_v<T, std::string>) {
@@ -77,6 +81,12 @@ template <class M> void print_yaml(std::ostream& os, const M& m, int indent = 0)
       print_yaml(os, field, indent + 2);
     } else if constexpr (std::is_same_v<F, std::string>) {
       os << pad << name << ": \"" << field << "\"\n";
+    } else if constexpr (std::is_same_v<F, std::uint32_t>) {
+      // A flags field is printed with the names of its bits (idl/ constants), not as a bare integer.
+      const auto names = flag_names<std::remove_const_t<M>>();
+      os << pad << name << ": " << scalar_text(field);
+      if (std::string_view(name) == "flags" && !names.empty()) os << " (" << describe_flags(names, field) << ")";
+      os << "\n";
     } else {
       os << pad << name << ": " << scalar_text(field) << "\n";
     }
@@ -87,15 +97,9 @@ template <class T> void parse_scalar(const std::string& text, T& out, const std:
   if constexpr (std::is_same_v<T, std::string>) {
     out = text;
   } else if constexpr (std::is_floating_point_v<T>) {
-    std::size_t used = 0;
-    double v = 0;
-    try {
-      v = std::stod(text, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != text.size()) throw std::invalid_argument("field '" + path + "': '" + text + "' is not a number");
-    out = static_cast<T>(v);
+    const auto v = parse_number(text);
+    if (!v) throw std::invalid_argument("field '" + path + "': '" + text + "' is not a number");
+    out = static_cast<T>(*v);
   } else {
     T v{};
     const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
@@ -138,7 +142,9 @@ template <class M> void set_field(M& m, const std::string& path, const std::stri
         throw std::invalid_argument("field '" + shown + "': name an element's field, e.g. " + head + ".0.<field>");
       std::size_t i = 0;
       parse_scalar(rest.substr(0, d2), i, shown);
-      if (i >= 32) throw std::invalid_argument("field '" + shown + "': index out of range (at most 32 elements)");
+      const std::size_t bound = M::max_size(head);  // the sequence's IDL bound
+      if (i >= bound)
+        throw std::invalid_argument("field '" + shown + "': index out of range (at most " + std::to_string(bound) + " elements)");
       if (field.size() <= i) field.resize(i + 1);
       set_field(field[i], rest.substr(d2 + 1), value, shown);
     } else if constexpr (std::is_class_v<F> && !std::is_same_v<F, std::string>) {

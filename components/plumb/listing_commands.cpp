@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "plumb/components/cli.hpp"
 #include "plumb/estimator/loader.hpp"
 #include "plumb/transport/loader.hpp"
 
@@ -9,12 +10,23 @@ namespace plumb::cli {
 
 void add_listing_commands(CLI::App& app) {
   auto* transports = app.add_subcommand("transports", "List the DDS transport plugins found, and which is selected");
+  // --transport (and --domain, --interface) are accepted here as on every command, so that a line
+  // copied from another command works: `plumb transports --transport fastdds` marks fastdds.
+  static components::TransportOptions s_transport;
+  components::add_transport_options(*transports, s_transport);
   transports->callback([] {
-    const std::string selected = transport::resolve_transport_name("");
+    const std::string selected = transport::resolve_transport_name(s_transport.transport);
     const auto found = transport::find_transports();
     if (found.empty()) {
       std::cerr << "plumb transports: no transport plugin found (set PLUMB_TRANSPORT_PATH?)" << std::endl;
       g_exit_code = 1;
+    }
+    bool selected_found = false;
+    for (const auto& t : found) selected_found = selected_found || t.name == selected;
+    if (!found.empty() && !selected_found) {
+      std::string names;
+      for (const auto& t : found) names += (names.empty() ? "" : ", ") + t.name;
+      throw transport::Error("unknown transport '" + selected + "' (found: " + names + ")");
     }
     for (const auto& t : found) {
       std::string version;

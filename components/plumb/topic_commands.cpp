@@ -10,10 +10,16 @@
 #include "commands.hpp"
 #include "fields.hpp"
 #include "plumb/components/cli.hpp"
+#include "plumb/components/convert.hpp"
+#include "plumb/csv/files.hpp"
 #include "topic_type.hpp"
+#include "topic_wait.hpp"
 
 namespace plumb::cli {
 namespace {
+
+// Messages per batched take: one vendor call for everything that arrived, up to this many.
+constexpr std::size_t kTakeBatch = 64;
 
 using Clock = std::chrono::steady_clock;
 using components::g_stop;
@@ -72,80 +78,156 @@ std::string csv_escape(const std::string& s) {
   return out + "\"";
 }
 
+// Sensor batches as the sensor CSV of CONVENTIONS.md (t, fx..bz, then gyros and temperature when the
+// first batch carries them): a capture replays (plumb-bridge --replay) and estimates offline
+// (plumb estimate) as it is.
+class SensorCsvWriter {
+ public:
+  void write(std::ostream& out, const topics::SensorBatch& batch) {
+    for (const auto& s : batch.samples) {
+      const Sample sample = components::from_topic(s);
+      if (!header_done_) {
+        with_gyro_ = (sample.flags & flags::kHasGyro) != 0;
+        with_temperature_ = (sample.flags & flags::kHasTemperature) != 0;
+        csv::write_sensor_header(out, with_gyro_, with_temperature_);
+        header_done_ = true;
+      }
+      csv::write_sensor_row(out, sample, with_gyro_, with_temperature_);
+    }
+  }
+
+ private:
+  bool header_done_ = false;
+  bool with_gyro_ = false;
+  bool with_temperature_ = false;
+};
+
+// Generic CSV of any other message: its flattened fields, one row per sequence element.
+class FlatCsvWriter {
+ public:
+  template <class M> void write(std::ostream& out, const M& msg) {
+    for (const auto& row : csv_rows(msg)) {
+      if (!header_done_) {
+        for (std::size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << row[i].first;
+        out << '\n';
+        header_done_ = true;
+      }
+      for (std::size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << csv_escape(row[i].second);
+      out << '\n';
+    }
+  }
+
+ private:
+  bool header_done_ = false;
+};
+
+// Why a receiving command ended, for its summary line.
+std::string end_reason(const TopicOptions& o, double elapsed_s) {
+  if (g_stop) return "interrupted after " + format_measured(elapsed_s) + " s";
+  if (o.timeout_s > 0 && elapsed_s >= o.timeout_s) return "timed out after " + format_measured(elapsed_s) + " s";
+  return "in " + format_measured(elapsed_s) + " s";
+}
+
 int run_echo(const TopicOptions& o) {
   auto conn = components::connect(o.transport, "plumb-topic-echo");
-  const auto type = resolve_topic_type(*conn.participant, o.topic, o.wait_s);
+  const auto& type = resolve_topic_type(*conn.participant, o.topic, o.wait_s);
   return with_topic_type(type, [&](auto proto) {
     using M = decltype(proto);
     auto qos = transport::default_qos_for_topic(o.topic);
-    if (type == transport::TopicType::SensorBatch && !o.reliable) qos = transport::Qos::sensor_stream();
+    if (std::is_same_v<M, topics::SensorBatch> && !o.reliable) qos = transport::Qos::sensor_stream();
     auto reader = transport::make_reader<M>(*conn.participant, o.topic, qos);
     components::install_stop_handler();
     const auto t0 = Clock::now();
     int received = 0;
-    bool header_done = false;
-    std::vector<std::string> header;
-    M msg;
+    SensorCsvWriter sensor_csv;
+    FlatCsvWriter flat_csv;
+    SilenceNotes silence("plumb topic echo", o.topic);
+    std::vector<M> taken;  // reused by every batched take
     while (!g_stop && (o.count == 0 || received < o.count)) {
       if (o.timeout_s > 0 && seconds_since(t0) > o.timeout_s) break;
       reader.wait(std::chrono::milliseconds(100));
-      while ((o.count == 0 || received < o.count) && reader.take(msg)) {
-        ++received;
-        if (!o.csv) {
-          print_yaml(std::cout, msg);
-          std::cout << "---" << std::endl;
-          continue;
-        }
-        for (const auto& row : csv_rows(msg)) {
-          if (!header_done) {
-            for (std::size_t i = 0; i < row.size(); ++i) std::cout << (i ? "," : "") << row[i].first;
-            std::cout << '\n';
-            header_done = true;
+      // Batched takes, never more than --count still wants (the rest stays for another reader).
+      for (;;) {
+        const std::size_t wanted = o.count == 0 ? kTakeBatch : std::min<std::size_t>(kTakeBatch, static_cast<std::size_t>(o.count - received));
+        if (wanted == 0 || reader.take(taken, wanted) == 0) break;
+        for (const M& msg : taken) {
+          ++received;
+          silence.received();
+          if (!o.csv) {
+            print_yaml(std::cout, msg);
+            std::cout << "---" << std::endl;
+            continue;
           }
-          for (std::size_t i = 0; i < row.size(); ++i) std::cout << (i ? "," : "") << csv_escape(row[i].second);
-          std::cout << '\n';
+          if constexpr (std::is_same_v<M, topics::SensorBatch>) {
+            sensor_csv.write(std::cout, msg);
+          } else {
+            flat_csv.write(std::cout, msg);
+          }
         }
-        std::cout.flush();
       }
+      silence.check(*conn.participant, reader.matched_writers());
     }
+    const double elapsed_s = seconds_since(t0);
     if (o.count > 0 && received < o.count) {
       std::cerr << "plumb topic echo: received " << received << " of " << o.count << " messages on '" << o.topic
-                << "'" << (g_stop ? " (interrupted)" : " before the timeout") << std::endl;
+                << "', " << end_reason(o, elapsed_s) << std::endl;
       return 1;
     }
+    if (received == 0) {  // Ctrl-C or --timeout with nothing: the command did not do its job
+      std::cerr << "plumb topic echo: no message on '" << o.topic << "', " << end_reason(o, elapsed_s) << " ("
+                << reader.matched_writers() << " writer(s) matched)" << std::endl;
+      return 1;
+    }
+    if (o.count == 0)
+      std::cerr << "plumb topic echo: " << received << " message(s) on '" << o.topic << "', "
+                << end_reason(o, elapsed_s) << std::endl;
     return 0;
   });
 }
 
 int run_hz(const TopicOptions& o) {
   auto conn = components::connect(o.transport, "plumb-topic-hz");
-  const auto type = resolve_topic_type(*conn.participant, o.topic, o.wait_s);
+  const auto& type = resolve_topic_type(*conn.participant, o.topic, o.wait_s);
   return with_topic_type(type, [&](auto proto) {
     using M = decltype(proto);
     auto qos = transport::default_qos_for_topic(o.topic);
-    if (type == transport::TopicType::SensorBatch) qos = transport::Qos::sensor_stream();
+    if (std::is_same_v<M, topics::SensorBatch>) qos = transport::Qos::sensor_stream();
     auto reader = transport::make_reader<M>(*conn.participant, o.topic, qos);
     components::install_stop_handler();
     const auto t0 = Clock::now();
     auto last_report = t0;
     std::vector<double> arrivals;  // seconds since t0, within the current report
-    std::size_t samples = 0, total = 0;
+    std::size_t samples = 0, total = 0, total_samples = 0;
+    double first_arrival = 0, last_arrival = 0;
     int reports = 0;
-    M msg;
+    SilenceNotes silence("plumb topic hz", o.topic);
+    std::vector<M> taken;  // reused by every batched take
     while (!g_stop && (o.count == 0 || reports < o.count)) {
       if (o.timeout_s > 0 && seconds_since(t0) > o.timeout_s) break;
       reader.wait(std::chrono::milliseconds(50));
-      while (reader.take(msg)) {
-        arrivals.push_back(seconds_since(t0));
-        ++total;
-        if constexpr (std::is_same_v<M, topics::SensorBatch>) samples += msg.samples.size();
+      while (reader.take(taken, kTakeBatch) > 0) {
+        // One arrival time per batch: every message of it was taken at that instant.
+        const double now = seconds_since(t0);
+        for (const M& msg : taken) {
+          last_arrival = now;
+          if (total == 0) first_arrival = last_arrival;
+          arrivals.push_back(now);
+          ++total;
+          silence.received();
+          if constexpr (std::is_same_v<M, topics::SensorBatch>) {
+            samples += msg.samples.size();
+            total_samples += msg.samples.size();
+          }
+        }
       }
+      silence.check(*conn.participant, reader.matched_writers());
       if (std::chrono::duration<double>(Clock::now() - last_report).count() < 1.0) continue;
       const double span = std::chrono::duration<double>(Clock::now() - last_report).count();
       last_report = Clock::now();
       ++reports;
       if (arrivals.size() < 2) {
-        std::cout << "no messages (" << arrivals.size() << " in the last " << format_number(span) << " s)" << std::endl;
+        std::cout << "no rate yet: " << arrivals.size() << " message(s) in the last " << format_measured(span) << " s"
+                  << std::endl;
         arrivals.clear();
         samples = 0;
         continue;
@@ -160,25 +242,32 @@ int run_hz(const TopicOptions& o) {
       }
       const double n = static_cast<double>(arrivals.size() - 1);
       const double mean = sum / n;
-      std::cout << "average rate: " << format_number(1.0 / mean) << " Hz  min: " << format_number(min_dt)
-                << " s  max: " << format_number(max_dt) << " s  std dev: "
-                << format_number(std::sqrt(std::max(0.0, sum2 / n - mean * mean))) << " s  window: " << arrivals.size();
-      if constexpr (std::is_same_v<M, topics::SensorBatch>) std::cout << "  samples/s: " << format_number(samples / span);
+      std::cout << "average rate: " << format_measured(1.0 / mean) << " Hz  min: " << format_measured(min_dt)
+                << " s  max: " << format_measured(max_dt) << " s  std dev: "
+                << format_measured(std::sqrt(std::max(0.0, sum2 / n - mean * mean))) << " s  window: " << arrivals.size();
+      if constexpr (std::is_same_v<M, topics::SensorBatch>) std::cout << "  samples/s: " << format_measured(samples / span);
       std::cout << std::endl;
       arrivals.clear();
       samples = 0;
     }
+    const double elapsed_s = seconds_since(t0);
     if (total == 0) {
-      std::cerr << "plumb topic hz: no message received on '" << o.topic << "'" << std::endl;
+      std::cerr << "plumb topic hz: no message on '" << o.topic << "', " << end_reason(o, elapsed_s) << " ("
+                << reader.matched_writers() << " writer(s) matched)" << std::endl;
       return 1;
     }
+    // The whole run in one line: what a person wants after Ctrl-C.
+    std::cerr << "plumb topic hz: " << total << " message(s) on '" << o.topic << "', " << end_reason(o, elapsed_s);
+    if (total > 1) std::cerr << ", average " << format_measured((total - 1) / (last_arrival - first_arrival)) << " Hz";
+    if constexpr (std::is_same_v<M, topics::SensorBatch>) std::cerr << ", " << total_samples << " samples";
+    std::cerr << std::endl;
     return 0;
   });
 }
 
 int run_pub(const TopicOptions& o) {
   auto conn = components::connect(o.transport, "plumb-topic-pub");
-  const auto type = resolve_topic_type(*conn.participant, o.topic, 0.5);
+  const auto& type = resolve_topic_type(*conn.participant, o.topic, 0.5);
   return with_topic_type(type, [&](auto proto) {
     using M = decltype(proto);
     M msg = proto;
@@ -197,13 +286,19 @@ int run_pub(const TopicOptions& o) {
     const int count = o.count > 0 ? o.count : 1;
     const auto period = std::chrono::duration<double>(1.0 / std::max(o.rate_hz, 1e-3));
     auto next = Clock::now();
+    int sent = 0;
     for (int i = 0; i < count && !g_stop; ++i) {
       writer.write(msg);
+      ++sent;
       next += std::chrono::duration_cast<Clock::duration>(period);
-      if (i + 1 < count) std::this_thread::sleep_until(next);
+      // Sleep in short steps: Ctrl-C during a slow --rate must not wait for the next message.
+      while (i + 1 < count && !g_stop && Clock::now() < next)
+        std::this_thread::sleep_for(std::min<Clock::duration>(next - Clock::now(), std::chrono::milliseconds(20)));
     }
-    std::cerr << "plumb topic pub: published " << count << " message(s) on '" << o.topic << "' ("
-              << writer.matched_readers() << " subscriber(s) matched)" << std::endl;
+    // What was actually sent, not what was asked for.
+    std::cerr << "plumb topic pub: published " << sent << (sent < count ? " of " + std::to_string(count) : std::string())
+              << " message(s) on '" << o.topic << "' (" << writer.matched_readers() << " subscriber(s) matched)"
+              << (sent < count ? ", interrupted" : "") << std::endl;
     // Reliable writers keep unacknowledged data only while they live: linger briefly.
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     return 0;
@@ -237,9 +332,11 @@ void add_topic_commands(CLI::App& app) {
   auto* echo = topic->add_subcommand("echo", "Print the messages of a topic (YAML-like, or CSV with --csv)");
   components::add_transport_options(*echo, o->transport);
   echo->add_option("topic", o->topic, "topic name, e.g. plumb/attitude/compensated")->required();
-  echo->add_flag("--csv", o->csv, "print CSV: a header, then one row per message (per sample for sensor batches)");
+  echo->add_flag("--csv", o->csv,
+                 "print CSV: a header, then one row per message; sensor topics give the sensor CSV of CONVENTIONS.md "
+                 "(t,fx,fy,fz,bx,by,bz[,wx,wy,wz][,temp_c]), which plumb estimate and plumb-bridge --replay read");
   echo->add_option("--count", o->count, "exit after this many messages (exit 1 if fewer arrive)");
-  echo->add_option("--timeout", o->timeout_s, "give up after this many seconds");
+  echo->add_option("--timeout", o->timeout_s, "give up after this many seconds (exit 1 if nothing arrived)");
   echo->add_option("--wait", o->wait_s, "seconds to wait for discovery of a topic outside plumb's names")->capture_default_str();
   echo->add_flag("--reliable", o->reliable, "reliable reader on sensor topics (default best-effort)");
   echo->callback([o] { g_exit_code = run_echo(*o); });

@@ -11,15 +11,30 @@
 #include <complex>
 #include <cstdio>
 
-#include "plumb/core/attitude.hpp"
-#include "plumb/estimators/demodulation.hpp"
-#include "plumb/estimators/platform_angle.hpp"
-#include "plumb/estimators/windowed_estimator.hpp"
+#include <Eigen/Core>
 
-namespace plumb::estimators {
+#include "plumb/core/attitude.hpp"
+#include "plumb/windowed/demodulation.hpp"
+#include "plumb/windowed/error_propagation.hpp"
+#include "plumb/windowed/platform_angle.hpp"
+#include "plumb/windowed/windowed_estimator.hpp"
+
+namespace plumb::windowed {
 namespace {
 
 constexpr double kRotatingDeg = 10.0;  // block-mean toolface span above which the platform turns
+
+// (I, A, T - phi_end) from x = (Re c, Im c, Re d, Im d, mean Gz, mean Bz): the closed form on the
+// rotation invariants (see the top of this file), exact at any attitude.
+Eigen::Vector3d attitude_from_invariants(const Eigen::VectorXd& x) {
+  const std::complex<double> c(x[0], x[1]), d(x[2], x[3]);
+  const double gz = x[4], bz = x[5];
+  const double radial_g = std::abs(c), r = std::abs(d);
+  const double alpha = -std::arg(-c) - std::arg(d);
+  const double azimuth =
+      std::atan2(-std::hypot(radial_g, gz) * r * std::sin(alpha), bz * radial_g + gz * r * std::cos(alpha));
+  return {std::atan2(radial_g, gz), azimuth, -std::arg(-c)};
+}
 
 class CompensatedEstimator final : public WindowedEstimator {
  protected:
@@ -28,9 +43,7 @@ class CompensatedEstimator final : public WindowedEstimator {
             "exact closed form on demodulated rotation invariants: no small-angle error, fits radial sensor biases",
             "1.0.0",
             {{"estimate_biases", "true", "fit constant radial accelerometer and magnetometer biases (needs one revolution)"},
-             {"smoothing", "0.1", "half-width in seconds of the platform-angle smoother used when speed is irregular"}},
-            false,
-            false};
+             {"smoothing", "0.1", "half-width in seconds of the platform-angle smoother used when speed is irregular"}}};
   }
 
   void configure_plugin(const ParameterReader& params) override {
@@ -72,9 +85,24 @@ class CompensatedEstimator final : public WindowedEstimator {
     const double field_phase = std::arg(dm.field);       // M - phi
     e.magnetic_toolface_deg = wrap_deg_360((phi_end + field_phase) / kDeg);
 
-    const double sigma_a = std::sqrt(dm.gravity_residual_var);
-    const double radial_g_sd = sigma_a / std::sqrt(n);
-    e.inclination_sd_deg = radial_g_sd / total_g / kDeg;
+    // Standard deviations (issue 14): the window's own noise propagated through the formulas
+    // above at this attitude. Inputs c, d (per component), mean Gz, mean Bz; their noises are
+    // independent (different sensor axes). A common error of the platform angle phi turns c and d
+    // oppositely and cancels in alpha, so the field's tangential noise enters alpha as the mean of
+    // the raw toolface noise: per axis, the larger of the fit's residual and the toolface noise
+    // times r^2 (a smoother absorbs part of the noise into phi and so shrinks the residual).
+    const double var_c = dm.gravity_residual_var * dm.coefficient_var_factor;
+    const double var_d = std::max(dm.field_residual_var, angle.phase_noise_var * r * r) * dm.coefficient_var_factor;
+    Eigen::VectorXd x(6), var(6);
+    x << dm.gravity.real(), dm.gravity.imag(), dm.field.real(), dm.field.imag(), dm.mean_gz, dm.mean_bz;
+    var << var_c, var_c, var_d, var_d, dm.gz_var / n, dm.bz_var / n;
+    const Eigen::Vector3d sd = propagate_attitude_sd_independent(attitude_from_invariants, x, var);
+    e.inclination_sd_deg = sd[0] / kDeg;
+    // Reported even when the angles are refused below: near vertical they say how bad it is.
+    e.azimuth_sd_deg = sd[1] / kDeg;
+    // The toolface at the window end also carries the platform angle's error there.
+    e.toolface_sd_deg = std::sqrt(sd[2] * sd[2] + angle.end_phase_var) / kDeg;
+    const double radial_g_sd = std::sqrt(var_c);
     const bool radial_gravity_seen = radial_g > 3 * radial_g_sd && e.inclination_deg > kMinInclinationForToolfaceDeg;
     if (!radial_gravity_seen) {
       e.reason = "near vertical: toolface and azimuth undefined";
@@ -83,17 +111,7 @@ class CompensatedEstimator final : public WindowedEstimator {
     e.toolface_valid = true;
     e.azimuth_valid = true;
     e.gravity_toolface_deg = wrap_deg_360((phi_end - gravity_phase) / kDeg);
-    const double alpha = -gravity_phase - field_phase;
-    auto azimuth = [&](double a) {
-      return std::atan2(-total_g * r * std::sin(a), dm.mean_bz * radial_g + dm.mean_gz * r * std::cos(a));
-    };
-    e.azimuth_deg = wrap_deg_360(azimuth(alpha) / kDeg);
-    // alpha's variance: the gravity phase (tangential noise over |c|) plus the platform angle's.
-    const double phase_var = dm.gravity_residual_var / (n * radial_g * radial_g) + angle.phase_noise_var / n;
-    const double h = 1e-4;
-    const double slope = wrap_deg_180((azimuth(alpha + h) - azimuth(alpha - h)) / kDeg) * kDeg / (2 * h);
-    e.azimuth_sd_deg = std::abs(slope) * std::sqrt(phase_var) / kDeg;
-    e.toolface_sd_deg = std::sqrt(phase_var) / kDeg;
+    e.azimuth_deg = wrap_deg_360(attitude_from_invariants(x)[1] / kDeg);
     if (std::abs(e.rpm) > 1e-9 && angle.revolutions() < 1 && e.rotating) {
       e.reason = "less than one revolution in window: radial sensor biases not removed";
     }
@@ -107,7 +125,7 @@ class CompensatedEstimator final : public WindowedEstimator {
 };
 
 }  // namespace
-}  // namespace plumb::estimators
+}  // namespace plumb::windowed
 
-PLUMB_ESTIMATOR_PLUGIN(plumb::estimators::CompensatedEstimator, "compensated",
+PLUMB_ESTIMATOR_PLUGIN(plumb::windowed::CompensatedEstimator,
                        "exact closed form on demodulated rotation invariants")

@@ -10,15 +10,48 @@
 #include <complex>
 #include <cstdio>
 
-#include "plumb/core/attitude.hpp"
-#include "plumb/estimators/demodulation.hpp"
-#include "plumb/estimators/platform_angle.hpp"
-#include "plumb/estimators/windowed_estimator.hpp"
+#include <Eigen/Core>
 
-namespace plumb::estimators {
+#include "plumb/core/attitude.hpp"
+#include "plumb/windowed/demodulation.hpp"
+#include "plumb/windowed/error_propagation.hpp"
+#include "plumb/windowed/platform_angle.hpp"
+#include "plumb/windowed/windowed_estimator.hpp"
+
+namespace plumb::windowed {
 namespace {
 
 constexpr double kRotatingDeg = 10.0;  // block-mean toolface span above which the platform turns
+
+// (I, -, T - M_end) from x = (Re z, Im z, mean Gz).
+Eigen::Vector3d inclination_and_toolface(const Eigen::VectorXd& x) {
+  const std::complex<double> z(x[0], x[1]);
+  return {std::atan2(std::abs(z), x[2]), 0.0, -std::arg(-z)};
+}
+
+// (-, A', -) from x = (P1, P2): the paper's small-angle azimuth.
+Eigen::Vector3d small_angle_azimuth(const Eigen::VectorXd& x) { return {0.0, std::atan2(x[0], -x[1]), 0.0}; }
+
+// The small-angle azimuth's own error A' - A = atan2(Bh sinA, cosI Bh cosA - sinI Bv) - A at an
+// inclination and dip (radians): its RMS and largest value over azimuth (72 azimuths: the error is
+// smooth in A).
+struct SmallAngleError {
+  double rms = 0, max = 0;
+};
+SmallAngleError small_angle_error(double inc, double dip) {
+  SmallAngleError out;
+  constexpr int kSteps = 72;
+  for (int k = 0; k < kSteps; ++k) {
+    const double a = 2 * kPi * k / kSteps;
+    const double err = std::remainder(
+        std::atan2(std::cos(dip) * std::sin(a), std::cos(inc) * std::cos(dip) * std::cos(a) - std::sin(inc) * std::sin(dip)) - a,
+        2 * kPi);
+    out.rms += err * err / kSteps;
+    out.max = std::max(out.max, std::abs(err));
+  }
+  out.rms = std::sqrt(out.rms);
+  return out;
+}
 
 class IntegralEstimator final : public WindowedEstimator {
  protected:
@@ -26,12 +59,13 @@ class IntegralEstimator final : public WindowedEstimator {
     return {"integral",
             "the paper's dynamic algorithm: products integrated over whole revolutions, small-angle azimuth",
             "1.0.0",
-            {},
-            false,
-            false};
+            {{"max_model_error_deg", "2.5",
+              "azimuth flagged invalid where the small-angle error (up to about sinI tan(dip)) can exceed this (deg)"}}};
   }
 
-  void configure_plugin(const ParameterReader&) override {}
+  void configure_plugin(const ParameterReader& params) override {
+    max_model_error_deg_ = params.number("max_model_error_deg", 0.0, 180.0);
+  }
 
   Estimate estimate_window(const WindowData& w) override {
     Estimate e;
@@ -55,17 +89,20 @@ class IntegralEstimator final : public WindowedEstimator {
 
     // Real arithmetic throughout: std::complex products and hypot are several times slower.
     double p1 = 0, p2 = 0, gz = 0, bz = 0, z_re = 0, z_im = 0;
+    double p11 = 0, p22 = 0, p12 = 0, gz2 = 0;  // second moments, for the standard deviations
     for (std::size_t k = 0; k < end; ++k) {
       const double gx = w.gx[k], gy = w.gy[k], bx = w.bx[k], by = w.by[k];
       const double cross = gx * by - gy * bx, dot = gx * bx + gy * by;
       p1 += cross;
       p2 += dot;
+      p11 += cross * cross, p22 += dot * dot, p12 += cross * dot;
       // (Gx + iGy)(Bx - iBy) / |Br| = (dot - i cross) / |Br|
       const double radial_b2 = bx * bx + by * by;
       const double inv = radial_b2 > 0 ? 1 / std::sqrt(radial_b2) : 0.0;
       z_re += dot * inv;
       z_im -= cross * inv;
       gz += w.gz[k];
+      gz2 += w.gz[k] * w.gz[k];
       bz += w.bz[k];
     }
     std::complex<double> z(z_re, z_im);
@@ -87,19 +124,50 @@ class IntegralEstimator final : public WindowedEstimator {
     const double m_end = angle.phase[w.size() - 1];
     e.magnetic_toolface_deg = wrap_deg_360(m_end / kDeg);
 
-    // Residual spread of the demodulated gravity: its noise, for the standard deviations.
-    double ss = 0;
+    // Residual spread of the demodulated gravity, split along z (its length: the inclination) and
+    // across it (its phase: the toolface). The field's phase noise shows only across z (a turn),
+    // so the two differ at large inclinations, where |z| is large.
+    const std::complex<double> along = std::abs(z) > 0 ? z / std::abs(z) : std::complex<double>(1, 0);
+    double ss_along = 0, ss_across = 0;
     for (std::size_t k = 0; k < end; ++k) {
       const double gx = w.gx[k], gy = w.gy[k], bx = w.bx[k], by = w.by[k];
       const double radial_b2 = bx * bx + by * by;
       if (!(radial_b2 > 0)) continue;
       const double inv = 1 / std::sqrt(radial_b2);
-      const double re = (gx * bx + gy * by) * inv - z.real(), im = -(gx * by - gy * bx) * inv - z.imag();
-      ss += re * re + im * im;
+      const std::complex<double> res((gx * bx + gy * by) * inv - z.real(), -(gx * by - gy * bx) * inv - z.imag());
+      const std::complex<double> turned = res * std::conj(along);
+      ss_along += turned.real() * turned.real();
+      ss_across += turned.imag() * turned.imag();
     }
-    const double sigma = std::sqrt(ss / std::max(1.0, 2 * (n - 1)));
-    const double radial_g_sd = sigma / std::sqrt(n);
-    e.inclination_sd_deg = radial_g_sd / total_g / kDeg;
+    const double dof = std::max(1.0, n - 1);
+    const double var_along = ss_along / dof / n, var_across = ss_across / dof / n;  // of the mean
+    const double radial_g_sd = std::sqrt(0.5 * (var_along + var_across));
+    // Standard deviations (issue 14): the window's noise propagated through the formulas used.
+    // Inclination and toolface from (z, mean Gz); the per-sample products are constant but for
+    // noise, so their sample covariance over n gives that of P1, P2 for the azimuth.
+    const double var_gz = std::max(0.0, gz2 - n * gz * gz) / dof;
+    const Eigen::Vector2d u(along.real(), along.imag()), t(-along.imag(), along.real());
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    cov.topLeftCorner<2, 2>() = var_along * u * u.transpose() + var_across * t * t.transpose();
+    cov(2, 2) = var_gz / n;
+    const Eigen::Vector3d sd_gravity =
+        propagate_attitude_sd(inclination_and_toolface, Eigen::Vector3d(z.real(), z.imag(), gz), Eigen::MatrixXd(cov));
+    // Demodulating against the raw, noisy field phase shrinks |z| on average by the factor
+    // E[cos eps] = exp(-var_eps / 2): a bias of the paper's inclination, which its sd carries.
+    const double shrink = std::abs(z) * (std::exp(0.5 * angle.phase_noise_var) - 1);
+    const double inclination_bias = std::abs(inclination_and_toolface(Eigen::Vector3d(z.real(), z.imag(), gz))[0] -
+                                             inclination_and_toolface(Eigen::Vector3d(z.real() + shrink * u[0],
+                                                                                      z.imag() + shrink * u[1], gz))[0]);
+    e.inclination_sd_deg = std::hypot(sd_gravity[0], inclination_bias) / kDeg;
+    Eigen::Matrix2d products;
+    products << p11 / n - p1 * p1, p12 / n - p1 * p2, p12 / n - p1 * p2, p22 / n - p2 * p2;
+    products /= dof;  // the sample covariance over n: that of the means
+    const Eigen::Vector3d sd_azimuth = propagate_attitude_sd(small_angle_azimuth, Eigen::Vector2d(p1, p2), Eigen::MatrixXd(products));
+    // The small-angle error is a sinusoid of azimuth of known amplitude at this inclination and
+    // dip: its RMS over azimuth joins the noise (the plugin keeps the paper's uncorrected azimuth).
+    const SmallAngleError model = small_angle_error(e.inclination_deg * kDeg, e.dip_deg * kDeg);
+    e.azimuth_sd_deg = std::hypot(sd_azimuth[1], model.rms) / kDeg;
+    e.toolface_sd_deg = std::sqrt(sd_gravity[2] * sd_gravity[2] + angle.end_phase_var) / kDeg;
     if (!(radial_g > 3 * radial_g_sd && e.inclination_deg > kMinInclinationForToolfaceDeg) || std::hypot(p1, p2) <= 0) {
       e.reason = "near vertical: toolface and azimuth undefined";
       return e;
@@ -108,13 +176,23 @@ class IntegralEstimator final : public WindowedEstimator {
     e.azimuth_deg = wrap_deg_360(std::atan2(p1, -p2) / kDeg);
     const double alpha = -std::arg(-z);  // T - M
     e.gravity_toolface_deg = wrap_deg_360((m_end + alpha) / kDeg);
-    e.azimuth_sd_deg = e.toolface_sd_deg = radial_g_sd / radial_g / kDeg;
+    if (model.max / kDeg > max_model_error_deg_) {
+      char text[160];
+      std::snprintf(text, sizeof text,
+                    "small-angle azimuth error up to %.3g deg at this inclination exceeds max_model_error_deg %.3g",
+                    model.max / kDeg, max_model_error_deg_);
+      e.reason = text;
+      e.azimuth_valid = false;
+    }
     return e;
   }
+
+ private:
+  double max_model_error_deg_ = 2.5;
 };
 
 }  // namespace
-}  // namespace plumb::estimators
+}  // namespace plumb::windowed
 
-PLUMB_ESTIMATOR_PLUGIN(plumb::estimators::IntegralEstimator, "integral",
+PLUMB_ESTIMATOR_PLUGIN(plumb::windowed::IntegralEstimator,
                        "the paper's dynamic algorithm (whole revolutions, small-angle azimuth)")

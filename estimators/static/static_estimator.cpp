@@ -8,11 +8,22 @@
 #include <Eigen/Core>
 
 #include "plumb/core/attitude.hpp"
-#include "plumb/estimators/platform_angle.hpp"
-#include "plumb/estimators/windowed_estimator.hpp"
+#include "plumb/windowed/error_propagation.hpp"
+#include "plumb/windowed/platform_angle.hpp"
+#include "plumb/windowed/windowed_estimator.hpp"
 
-namespace plumb::estimators {
+namespace plumb::windowed {
 namespace {
+
+// (I, A, T) in radians from x = (mean G, mean B): the closed form of CONVENTIONS.md, as
+// closed_form_attitude computes it but without its near-vertical cut-off (differentiated here).
+Eigen::Vector3d closed_form_radians(const Eigen::VectorXd& x) {
+  const double gx = x[0], gy = x[1], gz = x[2], bx = x[3], by = x[4], bz = x[5];
+  const double radial2 = gx * gx + gy * gy;
+  const double total_g = std::sqrt(radial2 + gz * gz);
+  return {std::atan2(std::sqrt(radial2), gz), std::atan2(total_g * (gx * by - gy * bx), bz * radial2 - gz * (gx * bx + gy * by)),
+          std::atan2(gy, -gx)};
+}
 
 class StaticEstimator final : public WindowedEstimator {
  protected:
@@ -20,9 +31,7 @@ class StaticEstimator final : public WindowedEstimator {
     return {"static",
             "classical closed-form attitude on window means; invalid while the platform turns",
             "1.0.0",
-            {{"max_turn", "10", "degrees of magnetic toolface turn in a window above which the platform is rotating"}},
-            false,
-            false};
+            {{"max_turn", "10", "degrees of magnetic toolface turn in a window above which the platform is rotating"}}};
   }
 
   void configure_plugin(const ParameterReader& params) override { max_turn_deg_ = params.number("max_turn", 0.0, 360.0); }
@@ -37,14 +46,14 @@ class StaticEstimator final : public WindowedEstimator {
     }
     g /= n;
     b /= n;
-    double var_g = 0, var_b = 0;
+    // Per-axis sample variances: the noise of each mean is var / n.
+    Eigen::Vector3d var_g = Eigen::Vector3d::Zero(), var_b = Eigen::Vector3d::Zero();
     for (std::size_t k = 0; k < count; ++k) {
-      var_g += (Eigen::Vector3d(w.gx[k], w.gy[k], w.gz[k]) - g).squaredNorm();
-      var_b += (Eigen::Vector3d(w.bx[k], w.by[k], w.bz[k]) - b).squaredNorm();
+      var_g += (Eigen::Vector3d(w.gx[k], w.gy[k], w.gz[k]) - g).cwiseAbs2();
+      var_b += (Eigen::Vector3d(w.bx[k], w.by[k], w.bz[k]) - b).cwiseAbs2();
     }
-    var_g /= 3 * (n - 1);
-    var_b /= 3 * (n - 1);
-
+    var_g /= n - 1;
+    var_b /= n - 1;
     const ClosedForm cf = closed_form_attitude(g, b);
     Estimate e;
     e.samples_used = static_cast<std::uint32_t>(count);
@@ -60,11 +69,16 @@ class StaticEstimator final : public WindowedEstimator {
     e.toolface_valid = cf.toolface_valid;
     e.reason = cf.reason;
 
-    const double radial_g = std::hypot(g.x(), g.y()), radial_b = std::hypot(b.x(), b.y());
-    if (cf.total_g > 0) e.inclination_sd_deg = std::sqrt(var_g / n) / cf.total_g / kDeg;
-    if (radial_g > 0 && radial_b > 0) {
-      const double phase_var = var_g / (n * radial_g * radial_g) + var_b / (n * radial_b * radial_b);
-      e.azimuth_sd_deg = e.toolface_sd_deg = std::sqrt(phase_var) / kDeg;
+    // Standard deviations (issue 14): the means' noise propagated through the closed form itself
+    // at this attitude (its Jacobian by central differences), for inclination, azimuth and toolface.
+    if (cf.valid) {
+      Eigen::VectorXd x(6), var(6);
+      x << g, b;
+      var << var_g / n, var_b / n;
+      const Eigen::Vector3d sd = propagate_attitude_sd_independent(closed_form_radians, x, var);
+      e.inclination_sd_deg = sd[0] / kDeg;
+      e.azimuth_sd_deg = sd[1] / kDeg;
+      e.toolface_sd_deg = sd[2] / kDeg;
     }
 
     const PlatformAngle angle = track_platform_angle(w, {0.1, 1});
@@ -76,6 +90,8 @@ class StaticEstimator final : public WindowedEstimator {
         char text[96];
         std::snprintf(text, sizeof text, "platform rotating (%.0f deg of turn in window)", turn_deg);
         e.valid = e.azimuth_valid = e.toolface_valid = false;
+        // Means of turning radial channels are meaningless, and so would be their sigmas: 0 = unknown.
+        e.inclination_sd_deg = e.azimuth_sd_deg = e.toolface_sd_deg = 0;
         e.reason = text;
       }
     }
@@ -87,7 +103,7 @@ class StaticEstimator final : public WindowedEstimator {
 };
 
 }  // namespace
-}  // namespace plumb::estimators
+}  // namespace plumb::windowed
 
-PLUMB_ESTIMATOR_PLUGIN(plumb::estimators::StaticEstimator, "static",
+PLUMB_ESTIMATOR_PLUGIN(plumb::windowed::StaticEstimator,
                        "classical closed-form attitude on window means (platform still)")

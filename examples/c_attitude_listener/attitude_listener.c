@@ -28,10 +28,12 @@ static void usage(FILE* out) {
   fprintf(out,
           "Usage: plumb-c-attitude-listener [OPTIONS] [TOPIC]\n"
           "Prints each plumb attitude message on TOPIC (default plumb/attitude/compensated), one per line.\n"
-          "  --domain N       DDS domain id, 0..232 (default 0)\n"
+          "  --domain N       DDS domain id, 0..232 (default $PLUMB_DOMAIN_ID, else 0)\n"
+          "  --transport T    cyclonedds only: this program uses Cyclone DDS directly (it hears Fast DDS\n"
+          "                   publishers all the same); accepted so that plumb's command lines work here\n"
           "  --count N        exit after N messages (default: run until Ctrl-C)\n"
           "  --timeout S      give up (exit 1) after S seconds without reaching --count\n"
-          "  --interface IF   network interface name or address (default: loopback only)\n"
+          "  --interface IF   network interface name or address (default $PLUMB_INTERFACE, else loopback only)\n"
           "  -h, --help       this text\n");
 }
 
@@ -84,6 +86,14 @@ int main(int argc, char** argv) {
   long domain = 0, count = 0, timeout_s = 0;
   const char* topic_name = "plumb/attitude/compensated";
   const char* interface = NULL;
+  /* The same environment as every plumb executable: options given below override it. */
+  const char* env_domain = getenv("PLUMB_DOMAIN_ID");
+  if (env_domain != NULL && *env_domain != '\0' && !parse_long(env_domain, 0, 232, &domain)) {
+    fprintf(stderr, "plumb-c-attitude-listener: PLUMB_DOMAIN_ID='%s' is not a domain id (0..232)\n", env_domain);
+    return 2;
+  }
+  const char* env_interface = getenv("PLUMB_INTERFACE");
+  if (env_interface != NULL && *env_interface != '\0') interface = env_interface;
   for (int i = 1; i < argc; ++i) {
     const char* arg = argv[i];
     const int has_value = i + 1 < argc;
@@ -107,6 +117,12 @@ int main(int argc, char** argv) {
       }
     } else if (strcmp(arg, "--interface") == 0 && has_value) {
       interface = argv[++i];
+    } else if (strcmp(arg, "--transport") == 0 && has_value) {
+      if (strcmp(argv[++i], "cyclonedds") != 0) {
+        fprintf(stderr, "plumb-c-attitude-listener: --transport %s: this example speaks Cyclone DDS only "
+                        "(give cyclonedds; it receives from Fast DDS publishers too)\n", argv[i]);
+        return 2;
+      }
     } else if (arg[0] == '-') {
       fprintf(stderr, "plumb-c-attitude-listener: unknown or incomplete option '%s' (see --help)\n", arg);
       return 2;

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <iostream>
 #include <thread>
 
@@ -18,15 +19,33 @@ void request_stop(int) { stop_requested = true; }
 
 int main(int argc, char** argv) {
   CLI::App app{"Publishes an Attitude message on plumb/attitude/example once a second."};
+  app.name("plumb-example-publisher");
   std::string transport_name;
   int count = 10;
   plumb::transport::ParticipantOptions options;
   options.name = "plumb-example-publisher";
   app.add_option("--transport", transport_name, "DDS vendor: fastdds or cyclonedds (default: $PLUMB_TRANSPORT, then cyclonedds)");
   app.add_option("--count", count, "messages to publish, 0 for no end")->check(CLI::NonNegativeNumber);
-  app.add_option("--domain", options.domain_id, "DDS domain id")->check(CLI::Range(0, 232));
-  app.add_option("--interface", options.interface, "network interface (name or IPv4 address); default: loopback only");
-  CLI11_PARSE(app, argc, argv);
+  // The same environment as plumb's executables; the options below override it.
+  if (const char* env = std::getenv("PLUMB_DOMAIN_ID"); env && *env) {
+    try {
+      options.domain_id = std::stoi(env);
+    } catch (const std::exception&) {
+      std::cerr << app.get_name() << ": PLUMB_DOMAIN_ID='" << env << "' is not a domain id (0..232)" << std::endl;
+      return 2;
+    }
+  }
+  if (const char* env = std::getenv("PLUMB_INTERFACE"); env && *env) options.interface = env;
+  app.add_option("--domain", options.domain_id, "DDS domain id (default: $PLUMB_DOMAIN_ID, then 0)")->check(CLI::Range(0, 232));
+  app.add_option("--interface", options.interface,
+                 "network interface (name or IPv4 address); default: $PLUMB_INTERFACE, then loopback only");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    std::cerr << app.get_name() << ": " << e.what() << " (see --help)" << std::endl;  // one line, status 2
+    return 2;
+  }
 
   std::signal(SIGINT, request_stop);
   std::signal(SIGTERM, request_stop);
@@ -46,8 +65,8 @@ int main(int argc, char** argv) {
     plumb::topics::Attitude attitude;
     attitude.tool_id = "example-tool";
     attitude.estimator = "example";
-    attitude.flags = plumb::topics::attitude_flags::kValid | plumb::topics::attitude_flags::kAzimuthValid |
-                     plumb::topics::attitude_flags::kToolfaceValid;
+    attitude.flags = plumb::topics::ATTITUDE_VALID | plumb::topics::ATTITUDE_AZIMUTH_VALID |
+                     plumb::topics::ATTITUDE_TOOLFACE_VALID;
     auto next = std::chrono::steady_clock::now();
     for (int i = 0; (count == 0 || i < count) && !stop_requested; ++i) {
       const auto now_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <iostream>
 
 #include "plumb/transport/loader.hpp"
@@ -17,6 +18,7 @@ void request_stop(int) { stop_requested = true; }
 
 int main(int argc, char** argv) {
   CLI::App app{"Prints the Attitude messages published on plumb/attitude/example."};
+  app.name("plumb-example-subscriber");
   std::string transport_name;
   int count = 0;
   double timeout_s = 0;
@@ -24,10 +26,27 @@ int main(int argc, char** argv) {
   options.name = "plumb-example-subscriber";
   app.add_option("--transport", transport_name, "DDS vendor: fastdds or cyclonedds (default: $PLUMB_TRANSPORT, then cyclonedds)");
   app.add_option("--count", count, "exit after this many messages, 0 for no end")->check(CLI::NonNegativeNumber);
-  app.add_option("--timeout", timeout_s, "give up (exit code 2) after this many seconds, 0 for never")->check(CLI::NonNegativeNumber);
-  app.add_option("--domain", options.domain_id, "DDS domain id")->check(CLI::Range(0, 232));
-  app.add_option("--interface", options.interface, "network interface (name or IPv4 address); default: loopback only");
-  CLI11_PARSE(app, argc, argv);
+  app.add_option("--timeout", timeout_s, "give up (exit code 1) after this many seconds, 0 for never")->check(CLI::NonNegativeNumber);
+  // The same environment as plumb's executables; the options below override it.
+  if (const char* env = std::getenv("PLUMB_DOMAIN_ID"); env && *env) {
+    try {
+      options.domain_id = std::stoi(env);
+    } catch (const std::exception&) {
+      std::cerr << app.get_name() << ": PLUMB_DOMAIN_ID='" << env << "' is not a domain id (0..232)" << std::endl;
+      return 2;
+    }
+  }
+  if (const char* env = std::getenv("PLUMB_INTERFACE"); env && *env) options.interface = env;
+  app.add_option("--domain", options.domain_id, "DDS domain id (default: $PLUMB_DOMAIN_ID, then 0)")->check(CLI::Range(0, 232));
+  app.add_option("--interface", options.interface,
+                 "network interface (name or IPv4 address); default: $PLUMB_INTERFACE, then loopback only");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    std::cerr << app.get_name() << ": " << e.what() << " (see --help)" << std::endl;  // one line, status 2
+    return 2;
+  }
 
   std::signal(SIGINT, request_stop);
   std::signal(SIGTERM, request_stop);
@@ -44,7 +63,7 @@ int main(int argc, char** argv) {
     while (!stop_requested && (count == 0 || received < count)) {
       if (timeout_s > 0 && std::chrono::steady_clock::now() > deadline) {
         std::cerr << "plumb-example-subscriber: timed out after " << received << " message(s)" << std::endl;
-        return 2;
+        return 1;
       }
       // Short waits so that Ctrl-C and --timeout are noticed promptly.
       if (!reader.wait(std::chrono::milliseconds(200))) continue;

@@ -8,6 +8,7 @@
 
 #include "plumb/core/attitude.hpp"
 #include "plumb/sim/platform.hpp"
+#include "plumb/sim/run_all.hpp"
 
 namespace plumb::sim {
 namespace {
@@ -147,17 +148,6 @@ Sample PlatformSimulator::next(TruthSample* truth) {
   return out;
 }
 
-std::vector<Sample> PlatformSimulator::run(std::vector<TruthSample>* truth) {
-  std::vector<Sample> out;
-  const std::size_t remaining = done() ? 0 : sample_count() - index_;
-  out.reserve(remaining);
-  if (truth) truth->reserve(truth->size() + remaining);
-  while (!done()) {
-    TruthSample ts;
-    out.push_back(next(&ts));
-    if (truth) truth->push_back(ts);
-  }
-  return out;
-}
+std::vector<Sample> PlatformSimulator::run(std::vector<TruthSample>* truth) { return run_all(*this, truth); }
 
 }  // namespace plumb::sim

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "plumb/core/number.hpp"
 #include "plumb/sim/platform.hpp"
 
 namespace plumb::sim {
@@ -19,16 +20,10 @@ const char* const kAccepted =
 }
 
 double number(const std::string& text, const std::string& field, const std::string& what) {
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(field, &used);
-  } catch (const std::exception&) {
-    fail(text, what + " '" + field + "' is not a number");
-  }
-  if (used != field.size()) fail(text, what + " '" + field + "' is not a number");
-  if (!std::isfinite(v)) fail(text, what + " must be finite");
-  return v;
+  const auto v = parse_number(field, true);
+  if (!v) fail(text, what + " '" + field + "' is not a number");
+  if (!std::isfinite(*v)) fail(text, what + " must be finite");
+  return *v;
 }
 
 std::vector<std::string> split(const std::string& s) {

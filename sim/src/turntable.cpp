@@ -17,7 +17,7 @@ Eigen::Vector3d raw_of(const TriadModel& t, const Eigen::Vector3d& x, double dT)
   const Eigen::Vector3d w = x + t.second_order.cwiseProduct(x.cwiseAbs2());
   const Eigen::Vector3d scale = Eigen::Vector3d::Ones() + t.scale_temp * dT;
   const Eigen::Vector3d v = t.sensitivity.inverse() * w.cwiseQuotient(scale);
-  return v + t.bias + t.bias_temp * dT;
+  return (v + t.bias_at(dT)).cwiseProduct(t.sensor_scale_at(dT));
 }
 
 Eigen::Matrix3d small_matrix(std::mt19937_64& rng, double sigma) {
@@ -91,7 +91,8 @@ SensorPackage SensorPackage::typical(AccelOutput output, std::uint64_t seed, boo
   t.magnetometer.bias = 10.0 * small_vector(rng, 2.0);
   if (temperature_effects) {
     t.accelerometer.bias_temp = raw_per_unit * small_vector(rng, 2e-4);
-    t.accelerometer.scale_temp = small_vector(rng, 2e-5);
+    // Each accelerometer's scale factor drifts on its own output (version 2 of the model).
+    t.accelerometer.sensor_scale_temp1 = small_vector(rng, 2e-5);
     t.magnetometer.bias_temp = 10.0 * small_vector(rng, 2e-3);
     t.magnetometer.scale_temp = small_vector(rng, 1e-5);
     // Thermometer: an offset and gain error, and a cubic term that matters above about 175 degC:

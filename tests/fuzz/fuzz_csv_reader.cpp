@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "plumb/bridge/line_parser.hpp"
-#include "plumb/core/csv.hpp"
+#include "plumb/csv/files.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

@@ -12,9 +12,10 @@ if [ -z "$cc" ] || [ -z "$cxx" ]; then
   echo "fuzz: clang not found (apt-get install -y clang-14 libclang-rt-14-dev)" >&2
   exit 1
 fi
+mkdir -p "$build"
 cmake -S "$src" -B "$build" -DCMAKE_C_COMPILER="$cc" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DPLUMB_BUILD_FUZZERS=ON -DPLUMB_BUILD_TESTS=ON -DPLUMB_BUILD_BENCHMARKS=OFF > "$build.configure.log" 2>&1 ||
-  { cat "$build.configure.log"; exit 1; }
+  -DPLUMB_BUILD_FUZZERS=ON -DPLUMB_BUILD_TESTS=ON -DPLUMB_BUILD_BENCHMARKS=OFF > "$build/configure.log" 2>&1 ||
+  { cat "$build/configure.log"; exit 1; }
 targets=(plumb_fuzz_frame_parser plumb_fuzz_csv_reader)
 cmake --build "$build" -j2 --target "${targets[@]}"
 out=$build/fuzz-out

@@ -2,6 +2,14 @@
 fails=0
 pass() { echo "ok   - $*"; }
 fail() { echo "FAIL - $*"; fails=$((fails + 1)); }
+# output_matches "pattern" command...: the command's output (stdout and stderr) matches. The output
+# is captured first: `cmd | grep -q` under pipefail fails at random, because grep quits at the first
+# match and a long writer (any --help) then dies of SIGPIPE.
+output_matches() {
+  local pattern=$1 out; shift
+  out=$("$@" 2>&1)
+  grep -q -- "$pattern" <<< "$out"
+}
 # expect_error "description" "stderr pattern" command...: non-zero exit, one stderr line matching.
 expect_error() {
   local what=$1 pattern=$2; shift 2

@@ -4,26 +4,26 @@
 #include <limits>
 
 #include "check.hpp"
-#include "conversions.hpp"
 #include "entity.hpp"
 #include "qos.hpp"
+#include "type_support.hpp"
 
 namespace plumb::transport::cyclonedds {
 
 namespace {
 
-template <class T> Entity create_topic(dds_entity_t participant, const std::string& topic) {
+Entity create_topic(dds_entity_t participant, const CycloneTypeSupport& type, const std::string& topic) {
   // The descriptor's type name is the scoped IDL name ("plumb::msg::Attitude"), the same string
   // Fast DDS registers, so the two vendors match on it.
-  const dds_entity_t handle = dds_create_topic(participant, CType<T>::descriptor(), topic.c_str(), nullptr, nullptr);
-  check(handle, "cannot create topic '" + topic + "' of type " + type_name(TopicTraits<T>::type));
+  const dds_entity_t handle = dds_create_topic(participant, type.descriptor, topic.c_str(), nullptr, nullptr);
+  check(handle, "cannot create topic '" + topic + "' of type " + type.type->type_name);
   return Entity(handle);
 }
 
-template <class T> class Writer final : public RawWriter {
+class Writer final : public RawWriter {
  public:
-  Writer(dds_entity_t participant, const std::string& topic, const Qos& qos)
-      : topic_name_(topic), topic_(create_topic<T>(participant, topic)) {
+  Writer(dds_entity_t participant, const CycloneTypeSupport& type, const std::string& topic, const Qos& qos)
+      : type_(type), topic_name_(topic), topic_(create_topic(participant, type, topic)) {
     const QosPtr q = make_endpoint_qos(qos);
     const dds_entity_t handle = dds_create_writer(participant, topic_.get(), q.get(), nullptr);
     check(handle, "cannot create a writer on '" + topic + "'");
@@ -31,10 +31,7 @@ template <class T> class Writer final : public RawWriter {
   }
 
   void write(const void* message) override {
-    typename CType<T>::type c{};
-    OutgoingBuffers buffers;
-    to_c(*static_cast<const T*>(message), c, buffers);
-    check(dds_write(writer_.get(), &c), [&] { return "write on '" + topic_name_ + "' failed"; });
+    check(type_.write(writer_.get(), message), [&] { return "write on '" + topic_name_ + "' failed"; });
   }
 
   std::size_t matched_readers() const override {
@@ -44,15 +41,17 @@ template <class T> class Writer final : public RawWriter {
   }
 
  private:
+  const CycloneTypeSupport& type_;
   std::string topic_name_;
   Entity topic_;
   Entity writer_;  // declared after topic_: deleted first
 };
 
-template <class T> class Reader final : public RawReader {
+class Reader final : public RawReader {
  public:
-  Reader(dds_entity_t participant, const std::string& topic, const Qos& qos, std::function<void()> on_data)
-      : topic_name_(topic), topic_(create_topic<T>(participant, topic)) {
+  Reader(dds_entity_t participant, const CycloneTypeSupport& type, const std::string& topic, const Qos& qos,
+         std::function<void()> on_data)
+      : type_(type), topic_name_(topic), topic_(create_topic(participant, type, topic)) {
     const QosPtr q = make_endpoint_qos(qos);
     dds_listener_t* listener = nullptr;
     if (on_data) {
@@ -75,27 +74,10 @@ template <class T> class Reader final : public RawReader {
     check(dds_waitset_attach(waitset_.get(), condition_.get(), 0), "cannot attach to the waitset of '" + topic + "'");
   }
 
-  bool take(void* message) override {
-    // One sample at a time, loaned from Cyclone and returned before the next; samples without
-    // data (a writer went away) are dropped on the way.
-    for (;;) {
-      void* loaned[1] = {nullptr};
-      dds_sample_info_t info{};
-      const dds_return_t n = dds_take(reader_.get(), loaned, &info, 1, 1);
-      check(n, [&] { return "take on '" + topic_name_ + "' failed"; });
-      if (n == 0) return false;
-      const bool valid = info.valid_data;
-      if (valid) {
-        try {
-          from_c(*static_cast<const typename CType<T>::type*>(loaned[0]), *static_cast<T*>(message));
-        } catch (...) {
-          dds_return_loan(reader_.get(), loaned, n);
-          throw;
-        }
-      }
-      dds_return_loan(reader_.get(), loaned, n);
-      if (valid) return true;
-    }
+  bool take(void* message) override { return take_loaned(1, [&](std::size_t) { return message; }) == 1; }
+
+  std::size_t take(std::size_t max, TakeTarget target) override {
+    return take_loaned(max, [&](std::size_t i) { return target.slot(target.context, i); });
   }
 
   bool wait(std::chrono::nanoseconds timeout) override {
@@ -112,8 +94,38 @@ template <class T> class Reader final : public RawReader {
   }
 
  private:
+  // Samples per dds_take: the loans of one call are arrays on the stack.
+  static constexpr std::size_t kLoansPerTake = 64;
+
+  // Takes up to `max` valid samples with Cyclone's multi-sample take, loaned (no copy into a
+  // sample of ours: each is converted straight from Cyclone's buffer into slot(i)) and returned
+  // after each call. Samples without data (a writer went away) are dropped on the way.
+  template <class Slot> std::size_t take_loaned(std::size_t max, Slot&& slot) {
+    std::size_t filled = 0;
+    while (filled < max) {
+      void* loaned[kLoansPerTake] = {};
+      dds_sample_info_t infos[kLoansPerTake];
+      const std::size_t wanted = std::min(max - filled, kLoansPerTake);
+      const dds_return_t n = dds_take(reader_.get(), loaned, infos, wanted, static_cast<uint32_t>(wanted));
+      check(n, [&] { return "take on '" + topic_name_ + "' failed"; });
+      if (n == 0) break;
+      try {
+        for (dds_return_t i = 0; i < n; ++i) {
+          if (infos[i].valid_data) type_.read(loaned[i], slot(filled++));
+        }
+      } catch (...) {
+        dds_return_loan(reader_.get(), loaned, n);
+        throw;
+      }
+      dds_return_loan(reader_.get(), loaned, n);
+      if (static_cast<std::size_t>(n) < wanted) break;  // the cache is empty
+    }
+    return filled;
+  }
+
   static void data_available(dds_entity_t, void* arg) { (*static_cast<std::function<void()>*>(arg))(); }
 
+  const CycloneTypeSupport& type_;
   std::string topic_name_;
   std::unique_ptr<std::function<void()>> on_data_;  // outlives reader_, whose listener calls it
   Entity topic_;
@@ -122,33 +134,16 @@ template <class T> class Reader final : public RawReader {
   Entity waitset_;
 };
 
-template <template <class> class Endpoint, class... Args> auto make_endpoint(TopicType type, Args&&... args) {
-  using Base = std::conditional_t<std::is_same_v<Endpoint<topics::Truth>, Writer<topics::Truth>>, RawWriter, RawReader>;
-  switch (type) {
-    case TopicType::SensorBatch:
-      return std::unique_ptr<Base>(new Endpoint<topics::SensorBatch>(std::forward<Args>(args)...));
-    case TopicType::Attitude:
-      return std::unique_ptr<Base>(new Endpoint<topics::Attitude>(std::forward<Args>(args)...));
-    case TopicType::CalibrationCoefficients:
-      return std::unique_ptr<Base>(new Endpoint<topics::CalibrationCoefficients>(std::forward<Args>(args)...));
-    case TopicType::ComponentStatus:
-      return std::unique_ptr<Base>(new Endpoint<topics::ComponentStatus>(std::forward<Args>(args)...));
-    case TopicType::Truth:
-      return std::unique_ptr<Base>(new Endpoint<topics::Truth>(std::forward<Args>(args)...));
-  }
-  throw Error("unknown topic type");
-}
-
 }  // namespace
 
-std::unique_ptr<RawWriter> make_writer(dds_entity_t participant, TopicType type, const std::string& topic,
+std::unique_ptr<RawWriter> make_writer(dds_entity_t participant, const TypeSupport& type, const std::string& topic,
                                        const Qos& qos) {
-  return make_endpoint<Writer>(type, participant, topic, qos);
+  return std::make_unique<Writer>(participant, find_type(type), topic, qos);
 }
 
-std::unique_ptr<RawReader> make_reader(dds_entity_t participant, TopicType type, const std::string& topic,
+std::unique_ptr<RawReader> make_reader(dds_entity_t participant, const TypeSupport& type, const std::string& topic,
                                        const Qos& qos, std::function<void()> on_data) {
-  return make_endpoint<Reader>(type, participant, topic, qos, std::move(on_data));
+  return std::make_unique<Reader>(participant, find_type(type), topic, qos, std::move(on_data));
 }
 
 }  // namespace plumb::transport::cyclonedds

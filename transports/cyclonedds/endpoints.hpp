@@ -11,9 +11,9 @@
 
 namespace plumb::transport::cyclonedds {
 
-std::unique_ptr<RawWriter> make_writer(dds_entity_t participant, TopicType type, const std::string& topic,
+std::unique_ptr<RawWriter> make_writer(dds_entity_t participant, const TypeSupport& type, const std::string& topic,
                                        const Qos& qos);
-std::unique_ptr<RawReader> make_reader(dds_entity_t participant, TopicType type, const std::string& topic,
+std::unique_ptr<RawReader> make_reader(dds_entity_t participant, const TypeSupport& type, const std::string& topic,
                                        const Qos& qos, std::function<void()> on_data);
 
 }  // namespace plumb::transport::cyclonedds

@@ -105,11 +105,11 @@ class CycloneParticipant final : public Participant {
                                   "cannot read discovered subscriptions"));
   }
 
-  std::unique_ptr<RawWriter> create_writer(TopicType type, const std::string& topic, const Qos& qos) override {
+  std::unique_ptr<RawWriter> create_writer(const TypeSupport& type, const std::string& topic, const Qos& qos) override {
     return make_writer(participant_.get(), type, topic, qos);
   }
 
-  std::unique_ptr<RawReader> create_reader(TopicType type, const std::string& topic, const Qos& qos,
+  std::unique_ptr<RawReader> create_reader(const TypeSupport& type, const std::string& topic, const Qos& qos,
                                            std::function<void()> on_data) override {
     return make_reader(participant_.get(), type, topic, qos, std::move(on_data));
   }

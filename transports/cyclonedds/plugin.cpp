@@ -17,14 +17,8 @@ class CycloneTransport final : public Transport {
   }
 };
 
-Transport* create() { return new CycloneTransport(); }
-
 }  // namespace
 
 }  // namespace plumb::transport::cyclonedds
 
-extern "C" __attribute__((visibility("default"))) const plumb_transport_plugin_v1* plumb_transport_plugin() {
-  static const plumb_transport_plugin_v1 plugin{PLUMB_TRANSPORT_ABI_VERSION, "cyclonedds",
-                                                &plumb::transport::cyclonedds::create};
-  return &plugin;
-}
+PLUMB_TRANSPORT_PLUGIN(plumb::transport::cyclonedds::CycloneTransport)

@@ -1,4 +1,4 @@
-// Type names and the per-topic conventions shared by every transport plugin and every component.
+// Looks topic names up in the table generated from idl/ (plumb/topics/names.hpp).
 #include <string_view>
 
 #include "plumb/transport/topic_names.hpp"
@@ -7,42 +7,37 @@
 namespace plumb::transport {
 
 namespace {
-bool has_prefix(std::string_view text, std::string_view prefix) {
-  return text.size() > prefix.size() && text.substr(0, prefix.size()) == prefix;
+
+const topics::TopicEntry* entry_for(std::string_view topic) {
+  const topics::TopicEntry* best = nullptr;
+  std::size_t best_length = 0;
+  for (const auto& e : topics::kTopicTable) {
+    const std::string_view name = e.name;
+    if (!e.prefix) {
+      if (topic == name) return &e;
+      continue;
+    }
+    if (topic.size() > name.size() && topic.starts_with(name) && name.size() > best_length) {
+      best = &e;
+      best_length = name.size();
+    }
+  }
+  return best;
 }
+
 }  // namespace
 
-const char* type_name(TopicType type) {
-  // Scoped IDL names: both vendors register the type under exactly this string, so a Fast DDS
-  // writer and a Cyclone DDS reader match.
-  switch (type) {
-    case TopicType::SensorBatch: return "plumb::msg::SensorBatch";
-    case TopicType::Attitude: return "plumb::msg::Attitude";
-    case TopicType::CalibrationCoefficients: return "plumb::msg::CalibrationCoefficients";
-    case TopicType::ComponentStatus: return "plumb::msg::ComponentStatus";
-    case TopicType::Truth: return "plumb::msg::Truth";
-  }
-  return "unknown";
-}
-
-std::string topic_names::attitude(const std::string& estimator) { return std::string(kAttitudePrefix) + estimator; }
-
-std::optional<TopicType> topic_type_for(const std::string& topic) {
-  if (has_prefix(topic, topic_names::kSensorPrefix)) return TopicType::SensorBatch;
-  if (has_prefix(topic, topic_names::kAttitudePrefix)) return TopicType::Attitude;
-  if (topic == topic_names::kCalibration) return TopicType::CalibrationCoefficients;
-  if (topic == topic_names::kStatus) return TopicType::ComponentStatus;
-  if (topic == topic_names::kSimTruth) return TopicType::Truth;
-  return std::nullopt;
+const TypeSupport* topic_type_for(const std::string& topic) {
+  const auto* e = entry_for(topic);
+  return e ? e->type : nullptr;
 }
 
 Qos default_qos_for_topic(const std::string& topic) {
-  if (has_prefix(topic, topic_names::kSensorPrefix)) return Qos::sensor_stream();
-  if (has_prefix(topic, topic_names::kAttitudePrefix)) return Qos::attitude();
-  if (topic == topic_names::kCalibration) return Qos::calibration();
-  if (topic == topic_names::kStatus) return Qos::status();
-  // Truth and unknown topics: reliable, volatile, like attitude.
-  return Qos::attitude();
+  const auto* e = entry_for(topic);
+  if (e == nullptr) return Qos::attitude();  // reliable, volatile: the safe guess for a name we do not know
+  return {e->qos.reliable ? Reliability::Reliable : Reliability::BestEffort,
+          e->qos.transient_local ? Durability::TransientLocal : Durability::Volatile,
+          e->qos.keep_all ? History::KeepAll : History::KeepLast, e->qos.depth};
 }
 
 }  // namespace plumb::transport

@@ -27,7 +27,9 @@ std::vector<std::pair<std::string, std::uint64_t>> Counters::named() const {
           {"raw_batches", raw_batches},
           {"calibrated_batches", calibrated_batches},
           {"calibrations_applied", calibrations_applied},
-          {"calibrations_rejected", calibrations_rejected}};
+          {"calibrations_rejected", calibrations_rejected},
+          {"calibrated_withheld", calibrated_withheld},
+          {"calibration_stamp_s", calibration_stamp_s}};
 }
 
 std::uint64_t Counters::problems() const {

@@ -14,16 +14,19 @@ bool DeviceSource::poll(std::vector<Sample>& out, std::chrono::milliseconds max_
   if (!on_event_) return true;
   switch (r.event) {
     case SerialPort::Event::Opened:
-      open_failure_reported_ = false;
+      open_failures_ = 0;
       on_event_(r.event, options_.path);
       break;
     case SerialPort::Event::Closed:
-      open_failure_reported_ = false;
+      open_failures_ = 0;
       on_event_(r.event, port_.last_error());
       break;
     case SerialPort::Event::OpenFailed:
-      if (!open_failure_reported_) on_event_(r.event, port_.last_error());
-      open_failure_reported_ = true;
+      // Reported at failures 1, 2, 4, 8...: a device missing for hours is said with its count at a
+      // growing interval, never silently and never once per attempt.
+      ++open_failures_;
+      if ((open_failures_ & (open_failures_ - 1)) == 0)
+        on_event_(r.event, port_.last_error() + " (attempt " + std::to_string(open_failures_) + ")");
       break;
     default:
       break;

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "plumb/core/csv.hpp"
+#include "plumb/csv/files.hpp"
 
 namespace plumb::bridge {
 namespace {

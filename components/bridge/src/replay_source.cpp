@@ -1,33 +1,49 @@
 #include "plumb/bridge/replay_source.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 #include <thread>
 
 namespace plumb::bridge {
 
-double parse_rate(const std::string& text) {
-  if (text == "realtime") return 1.0;
-  if (text == "max") return 0.0;
-  std::string number = text;
-  if (!number.empty() && (number.front() == 'x' || number.front() == 'X')) number.erase(0, 1);
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(number, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (number.empty() || used != number.size() || !std::isfinite(v) || v <= 0)
-    throw std::invalid_argument("--rate: expected realtime, xN (N > 0 times faster) or max, got '" + text + "'");
-  return v;
+ReplaySource::ReplaySource(const std::string& path, double speed, Counters& counters, bool strict,
+                           std::function<void(const csv::Error&)> on_bad_row, const csv::Import& import,
+                           const std::function<void(const std::string&)>& on_warning)
+    : path_(path),
+      import_(import),
+      speed_(speed),
+      c_(counters),
+      strict_(strict),
+      on_bad_row_(std::move(on_bad_row)),
+      file_(path) {
+  if (!file_) throw csv::Error(path, 0, "", "cannot open file");
+  reader_ = std::make_unique<csv::SensorReader>(file_, path, import_);
+  if (on_warning) check_units(on_warning);
 }
 
-ReplaySource::ReplaySource(const std::string& path, double speed, Counters& counters, bool strict,
-                           std::function<void(const csv::Error&)> on_bad_row)
-    : path_(path), speed_(speed), c_(counters), strict_(strict), on_bad_row_(std::move(on_bad_row)), file_(path) {
-  if (!file_) throw csv::Error(path, 0, "", "cannot open file");
-  reader_ = std::make_unique<csv::SensorReader>(file_, path);
+// A second, private read of the file's first seconds: at "realtime" the replay itself would
+// reach them only seconds later, after publishing wrong numbers.
+void ReplaySource::check_units(const std::function<void(const std::string&)>& on_warning) const {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path_, ec)) return;  // a FIFO cannot be read twice
+  std::ifstream head(path_);
+  std::vector<Sample> first;
+  try {
+    csv::SensorReader reader(head, path_, import_);
+    Sample s;
+    while (first.size() < 4096 && (first.empty() || !(s.t - first.front().t > 5.0))) {
+      try {
+        if (!reader.next(s)) break;
+        first.push_back(s);
+      } catch (const csv::Error&) {
+        // Counted and reported by the replay itself.
+      }
+    }
+  } catch (const csv::Error&) {
+    return;
+  }
+  for (const auto& warning : csv::check_units(first, import_)) on_warning(warning);
 }
 
 bool ReplaySource::read_next() {
@@ -83,7 +99,8 @@ bool ReplaySource::poll(std::vector<Sample>& out, std::chrono::milliseconds max_
 std::string ReplaySource::describe() const {
   return "replay of " + path_ + " " +
          (speed_ <= 0 ? std::string("as fast as possible")
-                      : speed_ == 1 ? std::string("in real time") : "at x" + std::to_string(speed_));
+                      : speed_ == 1 ? std::string("in real time") : "at x" + std::to_string(speed_)) +
+         (csv::is_default(import_) ? std::string() : " (" + csv::describe(import_) + ")");
 }
 
 }  // namespace plumb::bridge

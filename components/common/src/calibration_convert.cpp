@@ -55,8 +55,8 @@ CalibrationModel to_model(const topics::CalibrationCoefficients& m) {
 
 topics::CalibrationCoefficients to_topic(const CalibrationModel& c) {
   topics::CalibrationCoefficients m;
-  m.tool_id = c.tool_id.substr(0, topics::kToolIdMax);
-  m.calibration_id = c.calibration_id.substr(0, topics::kIdMax);
+  m.tool_id = c.tool_id.substr(0, topics::Attitude::kToolIdMax);
+  m.calibration_id = c.calibration_id.substr(0, topics::CalibrationCoefficients::kCalibrationIdMax);
   m.stamp_ns = std::isfinite(c.stamp_s) ? static_cast<std::int64_t>(std::llround(c.stamp_s * 1e9)) : 0;
   m.reference_temp_c = c.reference_temp_c;
   m.temp_min_c = c.temp_min_c;

@@ -1,8 +1,13 @@
 #include "plumb/components/cli.hpp"
 
+#include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <iostream>
+#include <stdexcept>
+#include <thread>
+
+#include "plumb/core/number.hpp"
 
 namespace plumb::components {
 
@@ -23,6 +28,12 @@ void add_transport_options(CLI::App& app, TransportOptions& options) {
   app.add_option("--domain", options.domain_id, "DDS domain id 0..232 (default: $PLUMB_DOMAIN_ID, else 0)");
   app.add_option("--interface", options.interface,
                  "network interface name or IPv4 address to use (default: $PLUMB_INTERFACE, else loopback only)");
+}
+
+void add_param_option(CLI::App& app, std::vector<std::string>& params) {
+  app.add_option("--param", params,
+                 "plugin parameter [PLUGIN.]KEY=VALUE, repeatable: KEY=VALUE goes to every plugin that declares KEY, "
+                 "PLUGIN.KEY=VALUE to that plugin only (see plumb plugins -v)");
 }
 
 Connection connect(const TransportOptions& options, const std::string& participant_name) {
@@ -50,6 +61,17 @@ Connection connect(const TransportOptions& options, const std::string& participa
   return c;
 }
 
+void sleep_while_running(double seconds) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (!g_stop && std::chrono::steady_clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+}
+
+double parse_rate_option(const std::string& text) {
+  const auto speed = parse_pace(text);
+  if (!speed) throw std::invalid_argument("--rate: expected realtime, xN (N > 0 times faster) or max, got '" + text + "'");
+  return *speed;
+}
+
 void install_stop_handler() {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
@@ -57,6 +79,31 @@ void install_stop_handler() {
 
 void print_error(const std::string& program, const std::string& message) {
   std::cerr << program << ": " << message << std::endl;
+}
+
+int exit_on_parse_error(const CLI::App& app, const CLI::ParseError& error) {
+  if (error.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(error);  // --help
+  std::string what = error.what();
+  while (!what.empty() && (what.back() == '\n' || what.back() == ' ')) what.pop_back();
+  for (auto& c : what)
+    if (c == '\n') c = ' ';
+  const std::string program = app.get_name().empty() ? "plumb" : app.get_name();
+  print_error(program, what + " (see " + program + " --help)");
+  return kUsageError;
+}
+
+int exit_on_error(const std::string& program, const std::exception& error) {
+  print_error(program, error.what());
+  return dynamic_cast<const std::invalid_argument*>(&error) != nullptr ? kUsageError : 1;
+}
+
+int parse_command_line(CLI::App& app, int argc, char** argv) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return exit_on_parse_error(app, e);
+  }
+  return -1;
 }
 
 }  // namespace plumb::components

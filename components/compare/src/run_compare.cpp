@@ -8,7 +8,7 @@
 #include "plumb/compare/compare.hpp"
 #include "plumb/core/attitude.hpp"
 #include "plumb/estimator/loader.hpp"
-#include "plumb/estimators/cramer_rao.hpp"
+#include "plumb/windowed/cramer_rao.hpp"
 
 namespace plumb::compare {
 
@@ -46,7 +46,8 @@ namespace {
 struct Accumulator {
   double sum_az = 0, sum_az2 = 0, sum_inc = 0, sum_inc2 = 0, sum_sd2 = 0;
   double max_az = 0, max_inc = 0;
-  int valid = 0, valid_inc = 0, records = 0;
+  double az_z2 = 0, inc_z2 = 0;  // squared error / reported sd
+  int valid = 0, valid_inc = 0, records = 0, az_z = 0, inc_z = 0;
 
   void add(const Estimate& e, double inc_true, double az_true) {
     ++records;
@@ -54,18 +55,21 @@ struct Accumulator {
       const double di = e.inclination_deg - inc_true;
       sum_inc += di, sum_inc2 += di * di, ++valid_inc;
       max_inc = std::max(max_inc, std::abs(di));
+      if (e.inclination_sd_deg > 0) inc_z2 += (di / e.inclination_sd_deg) * (di / e.inclination_sd_deg), ++inc_z;
     }
     if (e.valid && e.azimuth_valid) {
       const double da = wrap_deg_180(e.azimuth_deg - az_true);
       sum_az += da, sum_az2 += da * da, ++valid;
       max_az = std::max(max_az, std::abs(da));
       sum_sd2 += e.azimuth_sd_deg * e.azimuth_sd_deg;
+      if (e.azimuth_sd_deg > 0) az_z2 += (da / e.azimuth_sd_deg) * (da / e.azimuth_sd_deg), ++az_z;
     }
   }
   void merge(const Accumulator& o) {
     sum_az += o.sum_az, sum_az2 += o.sum_az2, sum_inc += o.sum_inc, sum_inc2 += o.sum_inc2, sum_sd2 += o.sum_sd2;
     max_az = std::max(max_az, o.max_az), max_inc = std::max(max_inc, o.max_inc);
     valid += o.valid, valid_inc += o.valid_inc, records += o.records;
+    az_z2 += o.az_z2, inc_z2 += o.inc_z2, az_z += o.az_z, inc_z += o.inc_z;
   }
 };
 
@@ -93,8 +97,8 @@ sim::Scenario record_scenario(const CompareConfig& config, double inc, double az
   return s;
 }
 
-estimators::CrbCase crb_case(const sim::Scenario& s, double rpm) {
-  estimators::CrbCase c;
+windowed::CrbCase crb_case(const sim::Scenario& s, double rpm) {
+  windowed::CrbCase c;
   c.g = s.g;
   c.total_b = s.total_b;
   c.dip_deg = s.dip_deg;
@@ -132,15 +136,9 @@ CompareResult run_compare(const CompareConfig& config, const ProgressCallback& p
   const auto started = std::chrono::steady_clock::now();
   if (config.plugins.empty()) throw std::runtime_error("no estimator plugins chosen");
   if (config.seeds < 1) throw std::runtime_error("seeds must be at least 1");
-  std::vector<estimator::EstimatorPtr> estimators;
-  for (const auto& name : config.plugins) {
-    estimators.push_back(estimator::load_estimator(name));
-    estimator::Parameters params{{"window", "0"}};
-    if (auto it = config.plugin_parameters.find(name); it != config.plugin_parameters.end()) {
-      for (const auto& [k, v] : it->second) params[k] = v;
-    }
-    estimators.back()->configure(params);  // validates now, before any long run
-  }
+  estimator::Runner runner = estimator::load_runner(config.plugins);
+  runner.configure(config.assignments, 0.0);  // validates now, before any long run
+  const std::size_t plugin_count = runner.slots().size();
   const std::vector<double> azimuths = config.azimuth_sweep();
   const std::size_t total = config.inclinations_deg.size() * config.rpms.size() * config.snr_accel_db.size() *
                             azimuths.size() * static_cast<std::size_t>(config.seeds);
@@ -148,19 +146,18 @@ CompareResult run_compare(const CompareConfig& config, const ProgressCallback& p
   result.plugins = config.plugins;
   std::size_t done = 0, case_index = 0;
   std::vector<Sample> samples;
-  std::vector<Estimate> estimates;
   for (double inc : config.inclinations_deg) {
     for (double rpm : config.rpms) {
       for (double snr : config.snr_accel_db) {
         CaseResult cr;
         cr.inclination_deg = inc, cr.rpm = rpm, cr.snr_accel_db = snr, cr.snr_mag_db = config.snr_mag_db;
-        std::vector<Accumulator> totals(estimators.size());
-        std::vector<PluginCaseResult> plugin_results(estimators.size());
-        std::vector<std::string> first_reason(estimators.size());
+        std::vector<Accumulator> totals(plugin_count);
+        std::vector<PluginCaseResult> plugin_results(plugin_count);
+        std::vector<std::string> first_reason(plugin_count);
         double crb_az2 = 0, crb_inc2 = 0;
         for (std::size_t ai = 0; ai < azimuths.size(); ++ai) {
           const double az = azimuths[ai];
-          std::vector<Accumulator> here(estimators.size());
+          std::vector<Accumulator> here(plugin_count);
           sim::Scenario first;
           for (int seed = 0; seed < config.seeds; ++seed) {
             const std::uint64_t serial = (case_index * azimuths.size() + ai) * static_cast<std::uint64_t>(config.seeds) +
@@ -169,31 +166,25 @@ CompareResult run_compare(const CompareConfig& config, const ProgressCallback& p
             if (seed == 0) first = s;
             sim::PlatformSimulator simulator(s);
             samples = simulator.run();
-            for (std::size_t p = 0; p < estimators.size(); ++p) {
-              estimator::Parameters params{{"window", "0"}};
-              if (auto it = config.plugin_parameters.find(config.plugins[p]); it != config.plugin_parameters.end()) {
-                for (const auto& [k, v] : it->second) params[k] = v;
-              }
-              estimators[p]->configure(params);
-              estimates.clear();
-              estimators[p]->push(samples, estimates);
-              estimators[p]->flush(estimates);
-              for (const auto& e : estimates) {
-                here[p].add(e, inc, az);
-                if ((!e.valid || !e.azimuth_valid) && first_reason[p].empty()) first_reason[p] = e.reason;
-              }
-            }
+            runner.reset();
+            const auto tally = [&](const estimator::Runner::Slot& slot, Estimate& e) {
+              const auto p = static_cast<std::size_t>(&slot - runner.slots().data());
+              here[p].add(e, inc, az);
+              if ((!e.valid || !e.azimuth_valid) && first_reason[p].empty()) first_reason[p] = e.reason;
+            };
+            runner.push(samples, tally);
+            runner.flush(tally);
             ++done;
             if (progress) progress(done, total);
           }
-          const estimators::CrbResult crb = estimators::cramer_rao_bound(crb_case(first, rpm));
+          const windowed::CrbResult crb = windowed::cramer_rao_bound(crb_case(first, rpm));
           crb_az2 += crb.azimuth_deg * crb.azimuth_deg;
           crb_inc2 += crb.inclination_deg * crb.inclination_deg;
           if (ai == 0) {
             cr.sigma_accel = first.sigma_accel();
             cr.sigma_mag = first.sigma_mag();
           }
-          for (std::size_t p = 0; p < estimators.size(); ++p) {
+          for (std::size_t p = 0; p < plugin_count; ++p) {
             AzimuthPoint pt;
             pt.azimuth_deg = az;
             pt.mean_azimuth_error_deg = safe_div(here[p].sum_az, here[p].valid);
@@ -211,7 +202,7 @@ CompareResult run_compare(const CompareConfig& config, const ProgressCallback& p
         const int n_az = static_cast<int>(azimuths.size());
         cr.crb_azimuth_deg = std::sqrt(safe_div(crb_az2, n_az));
         cr.crb_inclination_deg = std::sqrt(safe_div(crb_inc2, n_az));
-        for (std::size_t p = 0; p < estimators.size(); ++p) {
+        for (std::size_t p = 0; p < plugin_count; ++p) {
           PluginCaseResult& pr = plugin_results[p];
           const Accumulator& t = totals[p];
           pr.plugin = config.plugins[p];
@@ -220,6 +211,8 @@ CompareResult run_compare(const CompareConfig& config, const ProgressCallback& p
           pr.rms_inclination_error_deg = std::sqrt(safe_div(t.sum_inc2, t.valid_inc));
           pr.max_inclination_error_deg = t.max_inc;
           pr.mean_azimuth_sd_deg = std::sqrt(safe_div(t.sum_sd2, t.valid));
+          pr.azimuth_coverage = std::sqrt(safe_div(t.az_z2, t.az_z));
+          pr.inclination_coverage = std::sqrt(safe_div(t.inc_z2, t.inc_z));
           pr.valid = t.valid;
           pr.records = t.records;
           pr.first_invalid_reason = first_reason[p];

@@ -16,15 +16,25 @@ std::vector<Parameters> assign_parameters(const std::vector<Info>& estimators, c
   }
   for (const auto& kv : assignments) {
     const auto eq = kv.find('=');
-    if (eq == std::string::npos || eq == 0) throw ParameterError("--param '" + kv + "' is not KEY=VALUE");
-    const std::string key = kv.substr(0, eq);
+    if (eq == std::string::npos || eq == 0) throw ParameterError("--param '" + kv + "' is not [PLUGIN.]KEY=VALUE");
+    std::string key = kv.substr(0, eq);
+    std::string only;  // PLUGIN.KEY: that plugin alone
+    if (const auto dot = key.find('.'); dot != std::string::npos) {
+      only = key.substr(0, dot);
+      key = key.substr(dot + 1);
+      bool selected = false;
+      for (const auto& info : estimators) selected = selected || info.name == only;
+      if (!selected) throw ParameterError("--param '" + kv + "': estimator '" + only + "' is not selected");
+    }
     bool used = false;
     for (std::size_t i = 0; i < estimators.size(); ++i) {
-      if (!declares_parameter(estimators[i], key)) continue;
+      if ((!only.empty() && estimators[i].name != only) || !declares_parameter(estimators[i], key)) continue;
       out[i][key] = kv.substr(eq + 1);
       used = true;
     }
-    if (!used) throw ParameterError("--param '" + key + "': no selected estimator has that parameter (see plumb plugins -v)");
+    if (!used)
+      throw ParameterError("--param '" + key + "': " + (only.empty() ? "no selected estimator has" : only + " has no") +
+                           " that parameter (see plumb plugins -v)");
   }
   return out;
 }

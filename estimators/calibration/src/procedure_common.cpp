@@ -1,8 +1,12 @@
 #include "procedure_common.hpp"
 
 #include <algorithm>
+#include <map>
+#include <utility>
 #include <cmath>
 #include <sstream>
+
+#include <Eigen/Geometry>
 
 #include "plumb/calibration/triad_fit.hpp"
 #include "plumb/core/attitude.hpp"
@@ -57,6 +61,37 @@ std::vector<StationResidual> accel_residuals(const CalibrationModel& model, cons
                            format(r.direction_error_deg) + " deg from its nominal orientation");
     }
     out.push_back(r);
+  }
+  return out;
+}
+
+ResidualSplit split_residuals(const CalibrationModel& model, const std::vector<StationAverage>& stations) {
+  ResidualSplit out;
+  std::map<std::pair<std::string, int>, std::vector<std::pair<const StationAverage*, Eigen::Vector3d>>> faces;
+  for (const auto& s : stations) {
+    const Orientation& o = s.station.orientation;
+    if (!o.known()) continue;
+    const Eigen::Vector3d f = model.accelerometer.apply(s.accel, station_dT(model, s)).normalized();
+    faces[{s.station.run, o.face()}].emplace_back(&s, f);
+  }
+  const auto angle = [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    return std::atan2(a.cross(b).norm(), a.dot(b)) / kDeg;
+  };
+  for (const auto& [key, members] : faces) {
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (const auto& m : members) mean += m.second;
+    mean.normalize();
+    out.sensor_deg = std::max(out.sensor_deg, angle(mean, members.front().first->station.orientation.up()));
+    // One station per face (6-position): nothing tells its orientation from the sensors' errors.
+    if (members.size() < 2) continue;
+    out.valid = true;
+    for (const auto& m : members) {
+      const double a = angle(m.second, mean);
+      if (a > out.orientation_deg) {
+        out.orientation_deg = a;
+        out.worst_station = m.first->station.name;
+      }
+    }
   }
   return out;
 }

@@ -30,6 +30,12 @@ std::vector<StationResidual> accel_residuals(const CalibrationModel& model, cons
 
 void fill_identity(Result& r, const CommonOptions& o);
 
+// Splits the stations' direction errors after calibration into the part the turntable rotations
+// of a face share (the sensor model's) and the part that turns with the table (table tilt,
+// misplaced stations). Stations grouped by run and face; faces with fewer than 2 stations count
+// only toward the sensor part.
+ResidualSplit split_residuals(const CalibrationModel& model, const std::vector<StationAverage>& stations);
+
 // The samples-and-stations form of a procedure: averages the stations (a station that never
 // settles becomes the outcome's error), then runs the procedure on the averages.
 template <class Options, class Procedure>
@@ -43,7 +49,13 @@ Outcome from_samples(const std::vector<Sample>& samples, const std::vector<Stati
     o.error = e.what();
     return o;
   }
-  return procedure(averages, options);
+  Outcome out = procedure(averages, options);
+  // What the averaging left out (motion) goes into the warnings of the outcome and its result.
+  std::vector<std::string> notes;
+  for (const auto& a : averages) notes.insert(notes.end(), a.notes.begin(), a.notes.end());
+  out.warnings.insert(out.warnings.begin(), notes.begin(), notes.end());
+  if (out.result) out.result->warnings = out.warnings;
+  return out;
 }
 
 std::string format(double x, int precision = 4);

@@ -5,6 +5,7 @@
 
 #include "plumb/calibration/procedures.hpp"
 #include "plumb/calibration/triad_fit.hpp"
+#include "error_prediction.hpp"
 #include "procedure_common.hpp"
 
 namespace plumb::calibration {
@@ -77,6 +78,20 @@ Outcome six_position(const std::vector<StationAverage>& averages, const CommonOp
                                           options.warn_direction_error_deg, warnings);
     r.summary = "6-position accelerometer calibration from 6 stations; redundant-equation chi2 " +
                 detail::format(fit.chi2) + " (3 dof).";
+    // Predicted error: the station noise through the fit, inflated when the redundant equations
+    // disagree more than that noise explains (chi2 / dof > 1).
+    const CalibrationModel base = r.model;
+    std::vector<std::string> names = triad_parameter_names();
+    for (auto& n : names) n = "accel." + n;
+    r.predicted = detail::predict_error(
+        [base](const Eigen::VectorXd& th) {
+          CalibrationModel m = base;
+          m.accelerometer = triad_from_vector(th);
+          return m;
+        },
+        fit.params, std::max(1.0, fit.chi2 / 3) * fit.covariance, names,
+        detail::temperatures_over(r.model.temp_min_c, r.model.temp_max_c), options.g);
+    detail::require_predicted_error(r.predicted, options.max_error_deg);
     return r;
   });
 }

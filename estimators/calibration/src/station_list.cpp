@@ -8,6 +8,8 @@
 #include <ostream>
 #include <sstream>
 
+#include "plumb/core/number.hpp"
+
 namespace plumb::calibration {
 
 namespace {
@@ -28,14 +30,9 @@ std::vector<std::string> split(const std::string& line, char sep) {
 }
 
 double number(const std::string& text, const std::string& where) {
-  double x = 0;
-  const char* b = text.data();
-  const char* e = b + text.size();
-  if (b != e && *b == '+') ++b;
-  const auto r = std::from_chars(b, e, x);
-  if (text.empty() || r.ec != std::errc() || r.ptr != e || !std::isfinite(x))
-    throw CalibrationError(where + "bad number '" + text + "'");
-  return x;
+  const auto x = parse_number(text);
+  if (!x) throw CalibrationError(where + "bad number '" + text + "'");
+  return *x;
 }
 
 void write_number(std::ostream& out, double x) {

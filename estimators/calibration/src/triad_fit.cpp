@@ -140,13 +140,23 @@ TriadFit fit_six_faces(const FaceAverages& faces, double g) {
 
 void check_orientations(const std::vector<const StationAverage*>& stations, double max_angle_deg) {
   Eigen::Vector3d bias, amplitude = Eigen::Vector3d::Zero();
+  bool estimable = true;
   for (int i = 0; i < 3; ++i) {
     std::vector<double> horizontal;
-    for (const auto* s : stations)
-      if (s->station.orientation.known() && s->station.orientation.axis != i) horizontal.push_back(s->accel[i]);
+    bool vertical = false;
+    for (const auto* s : stations) {
+      if (!s->station.orientation.known()) continue;
+      if (s->station.orientation.axis != i) horizontal.push_back(s->accel[i]);
+      else vertical = true;
+    }
+    estimable = estimable && vertical && horizontal.size() >= 2;
     bias[i] = median(horizontal);
     for (const auto* s : stations) amplitude[i] = std::max(amplitude[i], std::abs(s->accel[i] - bias[i]));
   }
+  // Too few stations to tell each axis's offset and scale (a live procedure checks every station
+  // before recording it, the first one alone): judge the raw reading's direction as it is. An
+  // accelerometer's offset is small against its output at 1 g, so this catches a wrong face.
+  if (!estimable) bias.setZero(), amplitude.setOnes();
   for (const auto* s : stations) {
     const Orientation& o = s->station.orientation;
     if (!o.known()) continue;

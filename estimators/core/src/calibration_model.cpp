@@ -11,6 +11,10 @@
 #include <string_view>
 #include <vector>
 
+#include <Eigen/LU>
+
+#include "plumb/core/number.hpp"
+
 namespace plumb {
 
 namespace {
@@ -28,8 +32,17 @@ double solve_second_order(double w, double k2) {
 
 }  // namespace
 
+Eigen::Vector3d TriadModel::bias_at(double dT) const {
+  return bias + dT * (bias_temp + dT * (bias_temp2 + dT * bias_temp3));
+}
+
+Eigen::Vector3d TriadModel::sensor_scale_at(double dT) const {
+  return Eigen::Vector3d::Ones() + dT * (sensor_scale_temp1 + dT * (sensor_scale_temp2 + dT * sensor_scale_temp3));
+}
+
 Eigen::Vector3d TriadModel::apply(const Eigen::Vector3d& raw, double dT) const {
-  const Eigen::Vector3d v = raw - (bias + bias_temp * dT);
+  // The sensor's own scale drift first: it multiplies everything that sensor outputs, bias included.
+  const Eigen::Vector3d v = raw.cwiseQuotient(sensor_scale_at(dT)) - bias_at(dT);
   const Eigen::Vector3d scale = Eigen::Vector3d::Ones() + scale_temp * dT;
   const Eigen::Vector3d w = scale.asDiagonal() * (sensitivity * v);
   Eigen::Vector3d a;
@@ -37,9 +50,25 @@ Eigen::Vector3d TriadModel::apply(const Eigen::Vector3d& raw, double dT) const {
   return a;
 }
 
+Eigen::Vector3d TriadModel::raw_for(const Eigen::Vector3d& x, double dT) const {
+  const Eigen::Vector3d w = x + second_order.cwiseProduct(x.cwiseAbs2());
+  const Eigen::Vector3d scale = Eigen::Vector3d::Ones() + scale_temp * dT;
+  const Eigen::Vector3d v = sensitivity.lu().solve(w.cwiseQuotient(scale));
+  return (v + bias_at(dT)).cwiseProduct(sensor_scale_at(dT));
+}
+
 bool TriadModel::is_identity() const {
   return bias.isZero(0) && sensitivity == Eigen::Matrix3d::Identity() && second_order.isZero(0) &&
-         bias_temp.isZero(0) && scale_temp.isZero(0);
+         bias_temp.isZero(0) && scale_temp.isZero(0) && !has_version2_terms();
+}
+
+bool TriadModel::has_version2_terms() const {
+  return !(bias_temp2.isZero(0) && bias_temp3.isZero(0) && sensor_scale_temp1.isZero(0) &&
+           sensor_scale_temp2.isZero(0) && sensor_scale_temp3.isZero(0));
+}
+
+int CalibrationModel::format_version() const {
+  return accelerometer.has_version2_terms() || magnetometer.has_version2_terms() ? 2 : 1;
 }
 
 double CalibrationModel::corrected_temperature(double t) const {
@@ -67,7 +96,7 @@ void CalibrationModel::apply(Sample& s) const {
 namespace {
 
 constexpr std::string_view kFormatName = "plumb-calibration";
-constexpr int kFormatVersion = 1;
+constexpr int kNewestVersion = 2;
 
 void write_number(std::ostream& out, double x) {
   // Shortest representation that reads back to the same double: exact round trip.
@@ -92,13 +121,25 @@ std::vector<double> row_major(const Eigen::Matrix3d& m) {
   return out;
 }
 
-void write_triad(std::ostream& out, std::string_view prefix, const TriadModel& t) {
+// Version-1 files stay byte-for-byte what they were: the version-2 keys are written only when the
+// model has version-2 terms.
+void write_triad(std::ostream& out, std::string_view prefix, const TriadModel& t, bool version2) {
   const std::string p(prefix);
   write_values(out, p + ".bias", as_vector(t.bias));
   write_values(out, p + ".sensitivity", row_major(t.sensitivity));
   write_values(out, p + ".second_order", as_vector(t.second_order));
   write_values(out, p + ".bias_temp", as_vector(t.bias_temp));
   write_values(out, p + ".scale_temp", as_vector(t.scale_temp));
+  if (!version2) return;
+  write_values(out, p + ".bias_temp2", as_vector(t.bias_temp2));
+  write_values(out, p + ".bias_temp3", as_vector(t.bias_temp3));
+  write_values(out, p + ".sensor_scale_temp1", as_vector(t.sensor_scale_temp1));
+  write_values(out, p + ".sensor_scale_temp2", as_vector(t.sensor_scale_temp2));
+  write_values(out, p + ".sensor_scale_temp3", as_vector(t.sensor_scale_temp3));
+}
+
+bool is_version2_field(const std::string& field) {
+  return field == "bias_temp2" || field == "bias_temp3" || field.rfind("sensor_scale_temp", 0) == 0;
 }
 
 // Ids are the rest of their line: a '#' would start a comment and a line break end the value, and
@@ -133,14 +174,10 @@ class LineParser {
     std::istringstream in(rest_);
     std::string token;
     while (in >> token) {
-      double x = 0;
-      const char* first = token.data();
-      const char* last = first + token.size();
-      if (*first == '+') ++first;  // from_chars does not accept a leading '+'
-      const auto r = std::from_chars(first, last, x);
-      if (r.ec != std::errc() || r.ptr != last) fail("'" + key_ + "': '" + token + "' is not a number");
-      if (!std::isfinite(x)) fail("'" + key_ + "': value '" + token + "' is not finite");
-      out.push_back(x);
+      const auto x = parse_number(token, true);
+      if (!x) fail("'" + key_ + "': '" + token + "' is not a number");
+      if (!std::isfinite(*x)) fail("'" + key_ + "': value '" + token + "' is not finite");
+      out.push_back(*x);
     }
     if (out.size() != expected)
       fail("'" + key_ + "' needs " + std::to_string(expected) + " values, got " + std::to_string(out.size()));
@@ -178,6 +215,11 @@ bool parse_triad_key(const std::string& key, const LineParser& p, const std::str
   else if (field == "second_order") t.second_order = p.vector3();
   else if (field == "bias_temp") t.bias_temp = p.vector3();
   else if (field == "scale_temp") t.scale_temp = p.vector3();
+  else if (field == "bias_temp2") t.bias_temp2 = p.vector3();
+  else if (field == "bias_temp3") t.bias_temp3 = p.vector3();
+  else if (field == "sensor_scale_temp1") t.sensor_scale_temp1 = p.vector3();
+  else if (field == "sensor_scale_temp2") t.sensor_scale_temp2 = p.vector3();
+  else if (field == "sensor_scale_temp3") t.sensor_scale_temp3 = p.vector3();
   else return false;
   return true;
 }
@@ -185,25 +227,36 @@ bool parse_triad_key(const std::string& key, const LineParser& p, const std::str
 }  // namespace
 
 void write_calibration(std::ostream& out, const CalibrationModel& m) {
-  out << "# plumb calibration coefficients (docs/calibration.md)\n"
-      << "# per triad: v = u - (bias + bias_temp (T - T0)); w = diag(1 + scale_temp (T - T0)) S v;\n"
+  const int version = m.format_version();
+  out << "# plumb calibration coefficients (docs/calibration.md)\n";
+  if (version == 2)
+    out << "# per triad, d = T - T0: s = 1 + sensor_scale_temp1 d + sensor_scale_temp2 d^2 + sensor_scale_temp3 d^3;\n"
+        << "# v = u ./ s - (bias + bias_temp d + bias_temp2 d^2 + bias_temp3 d^3); w = diag(1 + scale_temp d) S v;\n";
+  else
+    out << "# per triad: v = u - (bias + bias_temp (T - T0)); w = diag(1 + scale_temp (T - T0)) S v;\n";
+  out
       << "# a solves a + second_order .* a^2 = w; T = c0 + c1 t + c2 t^2 + c3 t^3 (thermometer)\n"
       << "# sensitivity S is 9 values, row-major. accel.*: raw units -> m/s^2 specific force;\n"
       << "# mag.*: raw units -> microtesla.\n";
-  out << "format " << kFormatName << ' ' << kFormatVersion << '\n';
+  out << "format " << kFormatName << ' ' << version << '\n';
   out << "tool_id " << text_value(m.tool_id) << '\n';
   out << "calibration_id " << text_value(m.calibration_id) << '\n';
+  if (!m.accel_units.empty()) out << "accel_units " << text_value(m.accel_units) << '\n';
+  if (!m.mag_units.empty()) out << "mag_units " << text_value(m.mag_units) << '\n';
   write_values(out, "stamp_s", std::vector<double>{m.stamp_s});
   write_values(out, "reference_temp_c", std::vector<double>{m.reference_temp_c});
   write_values(out, "temp_range_c", std::vector<double>{m.temp_min_c, m.temp_max_c});
   write_values(out, "thermometer", m.thermometer);
-  write_triad(out, "accel", m.accelerometer);
-  write_triad(out, "mag", m.magnetometer);
+  write_triad(out, "accel", m.accelerometer, version == 2);
+  write_triad(out, "mag", m.magnetometer, version == 2);
 }
 
 CalibrationModel parse_calibration(std::istream& in, const std::string& source) {
   CalibrationModel m;
   std::map<std::string, int> seen;  // key -> line where it was first given
+  int version = 0;                  // 0: no format line (every key accepted)
+  int first_v2_line = 0;            // a version-2 key in a file that says version 1 is an error
+  std::string first_v2_key;
   std::string line;
   int line_no = 0;
   while (std::getline(in, line)) {
@@ -221,16 +274,20 @@ CalibrationModel parse_calibration(std::istream& in, const std::string& source) 
     if (key == "format") {
       std::istringstream words(rest);
       std::string name, extra;
-      int version = 0;
       if (!(words >> name >> version) || (words >> extra) || name != kFormatName)
-        p.fail("expected 'format " + std::string(kFormatName) + " " + std::to_string(kFormatVersion) + "'");
-      if (version != kFormatVersion)
-        p.fail("format version " + std::to_string(version) + " is not supported (this build reads " +
-               std::to_string(kFormatVersion) + ")");
+        p.fail("expected 'format " + std::string(kFormatName) + " 1' or '... 2'");
+      if (version < 1 || version > kNewestVersion)
+        p.fail("format version " + std::to_string(version) + " is not supported (this build reads 1 and " +
+               std::to_string(kNewestVersion) + ")");
     } else if (key == "tool_id") {
       m.tool_id = p.text();
     } else if (key == "calibration_id") {
       m.calibration_id = p.text();
+    } else if (key == "accel_units" || key == "mag_units") {
+      // One word: units are compared as written ("m/s2" is not "m/s^2").
+      if (p.text().empty() || p.text().find_first_of(" \t") != std::string::npos)
+        p.fail("'" + key + "' needs one word (e.g. m/s2, V, uT, counts)");
+      (key == "accel_units" ? m.accel_units : m.mag_units) = p.text();
     } else if (key == "stamp_s") {
       m.stamp_s = p.number();
     } else if (key == "reference_temp_c") {
@@ -246,8 +303,15 @@ CalibrationModel parse_calibration(std::istream& in, const std::string& source) 
     } else if (!parse_triad_key(key, p, "accel", m.accelerometer) &&
                !parse_triad_key(key, p, "mag", m.magnetometer)) {
       p.fail("unknown key '" + key + "'");
+    } else if (const auto dot = key.find('.'); is_version2_field(key.substr(dot + 1)) && first_v2_line == 0) {
+      first_v2_line = line_no;
+      first_v2_key = key;
     }
   }
+  // Keys come in any order, so the version is checked once the whole file is read.
+  if (version == 1 && first_v2_line > 0)
+    throw std::runtime_error(source + ":" + std::to_string(first_v2_line) + ": '" + first_v2_key +
+                             "' is a version-2 term but the file says 'format " + std::string(kFormatName) + " 1'");
   if (in.bad()) throw std::runtime_error(source + ": read error");
   if (seen.empty()) throw std::runtime_error(source + ": no calibration coefficients in the file");
   return m;

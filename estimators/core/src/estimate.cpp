@@ -9,6 +9,12 @@ bool Estimate::all_finite() const {
                    inclination_sd_deg, azimuth_sd_deg, toolface_sd_deg, dip_deg, total_g, total_b}) {
     if (!std::isfinite(v)) return false;
   }
+  if (navigation) {
+    for (const auto* a : {&navigation->position_m, &navigation->velocity_mps, &navigation->position_sd_m,
+                          &navigation->velocity_sd_mps})
+      for (double v : *a)
+        if (!std::isfinite(v)) return false;
+  }
   return true;
 }
 

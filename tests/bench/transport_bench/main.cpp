@@ -1,6 +1,8 @@
 // plumb-bench-transport: one-way latency (ping-pong, round trip / 2: median and p99) and throughput
 // of SensorBatch (32 samples) and Attitude messages over plumb's transports on loopback, for every
-// writer/reader vendor pair, beside Cyclone DDS's ddsperf run in the same way in the same run.
+// writer/reader vendor pair, beside the native programs of the same vendors with the same IDL types
+// (plumb-bench-native-cyclone, plumb-bench-native-fastdds) and Cyclone DDS's ddsperf, all run in
+// the same way in the same run.
 // Every measurement runs between two child processes (this program in a --role).
 #include <CLI/CLI.hpp>
 #include <unistd.h>
@@ -15,10 +17,12 @@
 
 #include "child_process.hpp"
 #include "ddsperf_baseline.hpp"
+#include "machine_load.hpp"
 #include "payloads.hpp"
 #include "plumb/transport/loader.hpp"
 #include "report.hpp"
 #include "roles.hpp"
+#include "sides.hpp"
 
 namespace {
 
@@ -30,13 +34,6 @@ struct MessageKind {
   std::string label;  // table label
   std::size_t payload_bytes;
 };
-
-std::string self_path() {
-  char path[4096];
-  const ssize_t n = readlink("/proc/self/exe", path, sizeof path - 1);
-  if (n <= 0) throw std::runtime_error("cannot find this program's path in /proc/self/exe");
-  return std::string(path, static_cast<std::size_t>(n));
-}
 
 std::string first_line_with(const std::string& file, const std::string& prefix) {
   std::ifstream in(file);
@@ -58,8 +55,7 @@ std::string file_words(const std::string& file, int words) {
 void print_machine(const std::vector<std::string>& transports) {
   std::cout << "- CPU:" << first_line_with("/proc/cpuinfo", "model name") << ", "
             << std::thread::hardware_concurrency() << " hardware threads\n"
-            << "- kernel: " << file_words("/proc/sys/kernel/osrelease", 1) << "; load average at start: "
-            << file_words("/proc/loadavg", 3) << "\n";
+            << "- kernel: " << file_words("/proc/sys/kernel/osrelease", 1) << "\n";
   for (const auto& name : transports) {
     try {
       std::cout << "- " << name << ": " << plumb::transport::load_transport(name)->vendor_version() << "\n";
@@ -70,15 +66,9 @@ void print_machine(const std::vector<std::string>& transports) {
 }
 
 struct Pair {
-  std::string writer, reader;
-  std::string label() const { return writer + " -> " + reader; }
+  Side writer, reader;
+  std::string label() const { return writer.label() + " -> " + reader.label(); }
 };
-
-std::vector<std::string> role_arguments(const std::string& role, const std::string& transport, const MessageKind& kind,
-                                        int domain, double seconds) {
-  return {"--role", role, "--transport", transport, "--type", kind.type, "--domain", std::to_string(domain),
-          "--seconds", std::to_string(seconds)};
-}
 
 std::chrono::steady_clock::duration timeout(double seconds) {
   return std::chrono::duration_cast<std::chrono::steady_clock::duration>(Seconds(seconds));
@@ -88,34 +78,51 @@ void report_failure(const char* what, const Pair& pair, const ChildProcess::Outc
   std::cerr << what << " " << pair.label() << " failed (exit code " << outcome.exit_code << ")" << std::endl;
 }
 
-LatencyRow measure_latency(const std::string& self, const MessageKind& kind, const Pair& pair, int domain, double seconds) {
-  LatencyRow row{kind.label, kind.payload_bytes, pair.label(), {}, {}, {}};
-  ChildProcess pong(self, role_arguments("pong", pair.reader, kind, domain, seconds));
-  ChildProcess ping(self, role_arguments("ping", pair.writer, kind, domain, seconds));
+ChildProcess start(const Programs& programs, const Side& side, const std::string& role, const MessageKind& kind,
+                   int domain, double seconds) {
+  auto command = programs.command(side, role, kind.type, domain, seconds);
+  const std::string program = command.front();
+  command.erase(command.begin());
+  return ChildProcess(program, command);
+}
+
+RowKind kind_of(const Pair& pair) { return pair.writer.native ? RowKind::Native : RowKind::Plumb; }
+
+LatencyRow measure_latency(const Programs& programs, const MessageKind& kind, const Pair& pair, int domain,
+                           double seconds) {
+  LatencyRow row{kind.label, kind.payload_bytes, kind_of(pair), pair.label(), {}, {}, {}, {}, {}, {}};
+  ChildProcess pong = start(programs, pair.reader, "pong", kind, domain, seconds);
+  ChildProcess ping = start(programs, pair.writer, "ping", kind, domain, seconds);
   const auto outcome = ping.finish(timeout(seconds + 40));
-  pong.finish(timeout(5));
-  double median = 0, p99 = 0;
+  const auto pong_outcome = pong.finish(timeout(5));
+  double median = 0, p99 = 0, ping_cpu = 0, pong_cpu = 0;
   if (outcome.exit_code == 0 && result_value(outcome.output, "median_us", median) && result_value(outcome.output, "p99_us", p99)) {
     row.median_us = median;
     row.p99_us = p99;
+    if (result_value(outcome.output, "cpu_us", ping_cpu) && result_value(pong_outcome.output, "cpu_us", pong_cpu) && pong_cpu > 0) {
+      row.cpu_us = ping_cpu + pong_cpu;
+    }
   } else {
     report_failure("latency", pair, outcome);
   }
   return row;
 }
 
-ThroughputRow measure_throughput(const std::string& self, const MessageKind& kind, const Pair& pair, int domain,
+ThroughputRow measure_throughput(const Programs& programs, const MessageKind& kind, const Pair& pair, int domain,
                                  double seconds) {
-  ThroughputRow row{kind.label, kind.payload_bytes, pair.label(), {}, {}, {}};
-  ChildProcess sink(self, role_arguments("sink", pair.reader, kind, domain, seconds));
-  ChildProcess source(self, role_arguments("source", pair.writer, kind, domain, seconds));
-  source.finish(timeout(seconds + 40));
+  ThroughputRow row{kind.label, kind.payload_bytes, kind_of(pair), pair.label(), {}, {}, {}, {}, {}, {}};
+  ChildProcess sink = start(programs, pair.reader, "sink", kind, domain, seconds);
+  ChildProcess source = start(programs, pair.writer, "source", kind, domain, seconds);
+  const auto source_outcome = source.finish(timeout(seconds + 40));
   const auto outcome = sink.finish(timeout(10));
-  double received = 0, sent = 0, elapsed = 0;
+  double received = 0, sent = 0, elapsed = 0, source_cpu = 0, sink_cpu = 0;
   if (outcome.exit_code == 0 && result_value(outcome.output, "received", received) &&
       result_value(outcome.output, "sent", sent) && result_value(outcome.output, "seconds", elapsed) && elapsed > 0) {
     row.messages_per_s = received / elapsed;
     row.loss_percent = sent > 0 ? 100.0 * (sent - received) / sent : 0.0;
+    if (result_value(source_outcome.output, "cpu_us", source_cpu) && result_value(outcome.output, "cpu_us", sink_cpu)) {
+      row.cpu_us = source_cpu + sink_cpu;
+    }
   } else {
     report_failure("throughput", pair, outcome);
   }
@@ -143,6 +150,7 @@ LatencyRow median_row(const std::vector<LatencyRow>& runs) {
   LatencyRow row = runs.front();
   row.median_us = median_field(runs, &LatencyRow::median_us);
   row.p99_us = median_field(runs, &LatencyRow::p99_us);
+  row.cpu_us = median_field(runs, &LatencyRow::cpu_us);
   return row;
 }
 
@@ -150,12 +158,13 @@ ThroughputRow median_row(const std::vector<ThroughputRow>& runs) {
   ThroughputRow row = runs.front();
   row.messages_per_s = median_field(runs, &ThroughputRow::messages_per_s);
   row.loss_percent = median_field(runs, &ThroughputRow::loss_percent);
+  row.cpu_us = median_field(runs, &ThroughputRow::cpu_us);
   return row;
 }
 
 int orchestrate(const std::vector<std::string>& transports, const std::vector<std::string>& types, double seconds,
-                int repeats, int domain, const std::string& ddsperf) {
-  const std::string self = self_path();
+                int repeats, int domain, const std::string& ddsperf, bool with_native) {
+  const Programs programs = find_programs();
   std::vector<MessageKind> kinds;
   for (const auto& type : types) {
     if (type == "sensor") {
@@ -174,31 +183,42 @@ int orchestrate(const std::vector<std::string>& transports, const std::vector<st
       std::cerr << "plumb-bench-transport: " << e.what() << std::endl;
       return 1;
     }
+    if (with_native && programs.native_program(name).empty()) {
+      std::cerr << "plumb-bench-transport: no native program for " << name << " next to this program (build "
+                << "plumb-bench-native-*, or run with --no-native)" << std::endl;
+      return 1;
+    }
   }
+  // Per writer -> reader vendor pair: the native programs, then plumb (its ratio is against them).
   std::vector<Pair> pairs;
   for (const auto& writer : transports)
-    for (const auto& reader : transports) pairs.push_back({writer, reader});
+    for (const auto& reader : transports) {
+      if (with_native) pairs.push_back({{true, writer}, {true, reader}});
+      pairs.push_back({{false, writer}, {false, reader}});
+    }
 
   std::cout << "## Transport benchmark (loopback, domain " << domain << ", " << seconds << " s per measurement, median of "
             << repeats << " interleaved run(s))\n\n";
   print_machine(transports);
-  std::cout << std::endl;
+  std::cout << std::flush;
+  MachineLoad load;
 
   std::vector<LatencyRow> latency;
   std::vector<ThroughputRow> throughput;
   for (const auto& kind : kinds) {
-    // Repeats are interleaved (baseline, every pair, baseline, ...) so that a busy spell of the
-    // machine hits both sides; each figure is the median over the repeats.
+    // Repeats are interleaved (ddsperf, then every pair native and plumb, ddsperf, ...) so that a
+    // busy spell of the machine hits both sides; each figure is the median over the repeats.
     std::vector<std::vector<LatencyRow>> latency_runs(pairs.size() + 1);
     std::vector<std::vector<ThroughputRow>> throughput_runs(pairs.size() + 1);
     for (int repeat = 0; repeat < repeats; ++repeat) {
       std::cerr << "measuring " << kind.label << ": ddsperf" << std::endl;
-      LatencyRow base{kind.label, kind.payload_bytes, "ddsperf", {}, {}, {}};
+      load.sample();
+      LatencyRow base{kind.label, kind.payload_bytes, RowKind::Ddsperf, "ddsperf", {}, {}, {}, {}, {}, {}};
       if (const auto baseline = ddsperf_latency(ddsperf, domain, kind.payload_bytes, seconds)) {
         base.median_us = baseline->median_us;
         base.p99_us = baseline->p99_us;
       }
-      ThroughputRow base_rate{kind.label, kind.payload_bytes, "ddsperf", {}, {}, {}};
+      ThroughputRow base_rate{kind.label, kind.payload_bytes, RowKind::Ddsperf, "ddsperf", {}, {}, {}, {}, {}, {}};
       if (const auto rate = ddsperf_throughput(ddsperf, domain, kind.payload_bytes, seconds)) {
         base_rate.messages_per_s = rate->messages_per_s;
       }
@@ -206,24 +226,38 @@ int orchestrate(const std::vector<std::string>& transports, const std::vector<st
       throughput_runs[0].push_back(base_rate);
       for (std::size_t i = 0; i < pairs.size(); ++i) {
         std::cerr << "measuring " << kind.label << ": " << pairs[i].label() << std::endl;
-        latency_runs[i + 1].push_back(measure_latency(self, kind, pairs[i], domain, seconds));
-        throughput_runs[i + 1].push_back(measure_throughput(self, kind, pairs[i], domain, seconds));
+        load.sample();
+        latency_runs[i + 1].push_back(measure_latency(programs, kind, pairs[i], domain, seconds));
+        throughput_runs[i + 1].push_back(measure_throughput(programs, kind, pairs[i], domain, seconds));
       }
     }
-    const LatencyRow base = median_row(latency_runs[0]);
-    const ThroughputRow base_rate = median_row(throughput_runs[0]);
-    latency.push_back(base);
-    throughput.push_back(base_rate);
+    const LatencyRow ddsperf_row = median_row(latency_runs[0]);
+    const ThroughputRow ddsperf_rate = median_row(throughput_runs[0]);
+    latency.push_back(ddsperf_row);
+    throughput.push_back(ddsperf_rate);
+    std::optional<double> native_median, native_rate, native_latency_cpu, native_rate_cpu;
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       LatencyRow row = median_row(latency_runs[i + 1]);
-      row.baseline_median_us = base.median_us;
-      latency.push_back(row);
       ThroughputRow rate = median_row(throughput_runs[i + 1]);
-      rate.baseline_messages_per_s = base_rate.messages_per_s;
+      if (row.kind == RowKind::Native) {
+        native_median = row.median_us;
+        native_rate = rate.messages_per_s;
+        native_latency_cpu = row.cpu_us;
+        native_rate_cpu = rate.cpu_us;
+      }
+      row.native_cpu_us = native_latency_cpu;
+      rate.native_cpu_us = native_rate_cpu;
+      row.native_median_us = native_median;  // the native pair just before this plumb pair
+      row.ddsperf_median_us = ddsperf_row.median_us;
+      rate.native_messages_per_s = native_rate;
+      rate.ddsperf_messages_per_s = ddsperf_rate.messages_per_s;
+      latency.push_back(row);
       throughput.push_back(rate);
     }
   }
-  std::cout << "### Latency (ping-pong, one-way = round trip / 2, reliable keep-last, data callbacks)\n\n";
+  std::cout << "\n### Machine load during the run\n\n";
+  load.print_summary(std::cout);
+  std::cout << "\n### Latency (ping-pong, one-way = round trip / 2, reliable keep-last 64, data callbacks)\n\n";
   print_latency_table(std::cout, latency);
   std::cout << "\n### Throughput (writer as fast as possible, reliable keep-last 4096)\n\n";
   print_throughput_table(std::cout, throughput);
@@ -239,7 +273,8 @@ int orchestrate(const std::vector<std::string>& transports, const std::vector<st
 
 int main(int argc, char** argv) {
   CLI::App app{"Transport benchmark: latency and throughput of plumb's transports on loopback, for every "
-               "writer/reader vendor pair, beside Cyclone DDS's ddsperf measured in the same run. Prints Markdown."};
+               "writer/reader vendor pair, beside native Cyclone DDS and Fast DDS programs with the same IDL types and "
+               "Cyclone DDS's ddsperf, measured in the same run. Prints Markdown."};
   std::vector<std::string> transports{"cyclonedds", "fastdds"};
   std::vector<std::string> types{"sensor", "attitude"};
   double seconds = 1;
@@ -247,6 +282,7 @@ int main(int argc, char** argv) {
   // A domain of its own (from the process id) keeps other plumb processes on this host out.
   int domain = 100 + static_cast<int>(getpid() % 100);
   std::string ddsperf = "ddsperf";
+  bool no_native = false;
   RoleOptions role;
   app.add_option("--transports", transports, "vendors to pair with each other")->delimiter(',');
   app.add_option("--types", types, "message types: sensor, attitude")->delimiter(',');
@@ -255,6 +291,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 10));
   app.add_option("--domain", domain, "DDS domain id (default: 100 + pid % 100)")->check(CLI::Range(0, 232));
   app.add_option("--ddsperf", ddsperf, "the ddsperf program of Cyclone DDS");
+  app.add_flag("--no-native", no_native, "leave out the native baseline programs (plumb-bench-native-*)");
   // Internal: the child processes of a measurement.
   app.add_option("--role", role.role, "internal: run as ping, pong, source or sink")->group("");
   app.add_option("--transport", role.transport, "internal: vendor of the role")->group("");
@@ -267,7 +304,7 @@ int main(int argc, char** argv) {
       role.seconds = seconds;
       return run_role(role);
     }
-    return orchestrate(transports, types, seconds, repeats, domain, ddsperf);
+    return orchestrate(transports, types, seconds, repeats, domain, ddsperf, !no_native);
   } catch (const std::exception& e) {
     std::cerr << "plumb-bench-transport: " << e.what() << std::endl;
     return 1;

@@ -27,7 +27,7 @@ template <> topics::SensorBatch make_payload<topics::SensorBatch>() {
   topics::SensorBatch batch;
   batch.tool_id = "bench-tool";
   batch.calibration_id = "bench-calibration-0001";
-  batch.samples.resize(topics::kMaxSamplesPerBatch);
+  batch.samples.resize(topics::SensorBatch::kSamplesMax);
   for (std::size_t i = 0; i < batch.samples.size(); ++i) {
     auto& s = batch.samples[i];
     s.seq = i;
@@ -36,7 +36,7 @@ template <> topics::SensorBatch make_payload<topics::SensorBatch>() {
     s.bx = 20.0; s.by = 5.0; s.bz = 45.0;
     s.wx = 0.001; s.wy = 0.002; s.wz = 6.28;
     s.temp_c = 85.0;
-    s.flags = topics::sample_flags::kHasGyro | topics::sample_flags::kHasTemperature;
+    s.flags = topics::SAMPLE_HAS_GYRO | topics::SAMPLE_HAS_TEMPERATURE;
   }
   return batch;
 }
@@ -48,7 +48,7 @@ template <> topics::Attitude make_payload<topics::Attitude>() {
   attitude.inclination_deg = 30;
   attitude.azimuth_deg = 120;
   attitude.samples_used = 400;
-  attitude.flags = topics::attitude_flags::kValid;
+  attitude.flags = topics::ATTITUDE_VALID;
   return attitude;
 }
 

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-#include "plumb/transport/messages.hpp"
+#include "plumb/transport/transport.hpp"
 
 namespace plumb::bench {
 

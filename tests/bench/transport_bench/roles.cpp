@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <ctime>
 #include <cstdio>
 #include <iostream>
 #include <mutex>
@@ -23,6 +24,8 @@ namespace tr = plumb::transport;
 
 constexpr auto kMatchTimeout = 15s;
 constexpr std::size_t kWarmupRoundTrips = 200;
+// Messages per batched take, as many as the native programs take per call.
+constexpr std::size_t kTakeBatch = 64;
 
 // Reliable and keep-last, like ddsperf's ping/pong (which is keep-last 1; one message is in flight).
 tr::Qos latency_qos() { return tr::Qos::attitude(); }
@@ -93,6 +96,15 @@ template <class Endpoint> bool wait_until(Endpoint&& ready, Clock::duration time
   return true;
 }
 
+// CPU time of this whole process (every thread: ours and the vendor's), in seconds. Per message,
+// it tells what plumb costs beside the native programs even when a busy machine makes the
+// wall-clock figures noisy.
+double process_cpu_s() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
+}
+
 double percentile(std::vector<double> values, double fraction) {
   if (values.empty()) return 0;
   const auto index = static_cast<std::size_t>(fraction * static_cast<double>(values.size() - 1) + 0.5);
@@ -113,27 +125,33 @@ template <class T> int run_ping(tr::Participant& participant, double seconds) {
   Clock::time_point sent_at;
   Clock::time_point measure_until = Clock::time_point::max();
   bool finished = false;
+  double cpu_start = 0, cpu_end = 0;  // over the measured round trips
 
+  std::vector<T> pongs;  // used by the data callback only
   auto on_pong = [&] { gate.with_reader([&](tr::Reader<T>& reader) {
-    T pong;
-    while (reader.take(pong)) {
-      const auto now = Clock::now();
-      std::lock_guard lock(mutex);
-      if (finished || get_seq(pong) != seq) continue;
-      if (seq >= kWarmupRoundTrips) {
-        one_way_us.push_back(std::chrono::duration<double, std::micro>(now - sent_at).count() / 2);
-      } else if (seq + 1 == kWarmupRoundTrips) {
-        measure_until = now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+    do {
+      reader.take(pongs, kTakeBatch);
+      for (const T& pong : pongs) {
+        const auto now = Clock::now();
+        std::lock_guard lock(mutex);
+        if (finished || get_seq(pong) != seq) continue;
+        if (seq >= kWarmupRoundTrips) {
+          one_way_us.push_back(std::chrono::duration<double, std::micro>(now - sent_at).count() / 2);
+        } else if (seq + 1 == kWarmupRoundTrips) {
+          measure_until = now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+          cpu_start = process_cpu_s();
+        }
+        if (now >= measure_until) {
+          cpu_end = process_cpu_s();
+          finished = true;
+          done.set();
+          continue;
+        }
+        set_seq(message, ++seq);
+        sent_at = Clock::now();
+        writer.write(message);
       }
-      if (now >= measure_until) {
-        finished = true;
-        done.set();
-        continue;
-      }
-      set_seq(message, ++seq);
-      sent_at = Clock::now();
-      writer.write(message);
-    }
+    } while (pongs.size() == kTakeBatch);
   }); };
   auto reader = tr::make_reader<T>(participant, kPongTopic, latency_qos(), on_pong);
   gate.open(reader);
@@ -175,8 +193,8 @@ template <class T> int run_ping(tr::Participant& participant, double seconds) {
   std::this_thread::sleep_for(100ms);  // let the stop message go out before the writer is deleted
   std::lock_guard lock(mutex);
   if (one_way_us.empty() || gate.failed()) return 1;
-  std::printf("RESULT count=%zu median_us=%.3f p99_us=%.3f\n", one_way_us.size(), percentile(one_way_us, 0.5),
-              percentile(one_way_us, 0.99));
+  std::printf("RESULT count=%zu median_us=%.3f p99_us=%.3f cpu_us=%.3f\n", one_way_us.size(), percentile(one_way_us, 0.5),
+              percentile(one_way_us, 0.99), (cpu_end - cpu_start) * 1e6 / static_cast<double>(one_way_us.size()));
   return 0;
 }
 
@@ -186,22 +204,30 @@ template <class T> int run_pong(tr::Participant& participant, double seconds) {
   ReaderGate<T> gate;
   Done done;
   std::atomic<std::uint64_t> echoed{0};
+  double cpu_start = 0, cpu_end = 0;  // from the first echo to the stop message (data callback only)
+  std::vector<T> pings;  // used by the data callback only
   auto on_ping = [&] { gate.with_reader([&](tr::Reader<T>& reader) {
-    T ping;
-    while (reader.take(ping)) {
-      if (get_seq(ping) == kStopSeq) {
-        done.set();
-        continue;
+    do {
+      reader.take(pings, kTakeBatch);
+      for (const T& ping : pings) {
+        if (get_seq(ping) == kStopSeq) {
+          cpu_end = process_cpu_s();
+          done.set();
+          continue;
+        }
+        if (echoed == 0) cpu_start = process_cpu_s();
+        writer.write(ping);
+        ++echoed;
       }
-      writer.write(ping);
-      ++echoed;
-    }
+    } while (pings.size() == kTakeBatch);
   }); };
   auto reader = tr::make_reader<T>(participant, kPingTopic, latency_qos(), on_ping);
   gate.open(reader);
   const bool stopped = done.wait_for(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds + 30)));
   gate.close();
-  std::printf("RESULT echoed=%llu stopped=%d\n", static_cast<unsigned long long>(echoed.load()), stopped ? 1 : 0);
+  const double cpu_us = echoed > 0 && cpu_end > cpu_start ? (cpu_end - cpu_start) * 1e6 / static_cast<double>(echoed.load()) : 0;
+  std::printf("RESULT echoed=%llu stopped=%d cpu_us=%.3f\n", static_cast<unsigned long long>(echoed.load()), stopped ? 1 : 0,
+              cpu_us);
   return gate.failed() ? 1 : 0;
 }
 
@@ -215,6 +241,7 @@ template <class T> int run_source(tr::Participant& participant, double seconds) 
     return 1;
   }
   std::this_thread::sleep_for(200ms);  // the reader side matches a little after the writer side
+  const double cpu_start = process_cpu_s();
   const auto start = Clock::now();
   const auto end = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds + 0.5));
   std::uint64_t seq = 0;
@@ -225,12 +252,13 @@ template <class T> int run_source(tr::Participant& participant, double seconds) 
     }
   }
   const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+  const double cpu_us = (process_cpu_s() - cpu_start) * 1e6 / static_cast<double>(seq);
   set_seq(message, kStopSeq);
   for (int i = 0; i < 5; ++i) {
     writer.write(message);
     std::this_thread::sleep_for(50ms);
   }
-  std::printf("RESULT sent=%llu seconds=%.6f\n", static_cast<unsigned long long>(seq), elapsed);
+  std::printf("RESULT sent=%llu seconds=%.6f cpu_us=%.3f\n", static_cast<unsigned long long>(seq), elapsed, cpu_us);
   return 0;
 }
 
@@ -243,25 +271,29 @@ template <class T> int run_sink(tr::Participant& participant, double seconds) {
   const auto window = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
   std::uint64_t received = 0, lowest = kStopSeq, highest = 0;
   Clock::time_point first;
+  double cpu_start = 0, cpu_end = 0;  // over the window
+  std::vector<T> messages;  // used by the data callback only
   auto on_data = [&] { gate.with_reader([&](tr::Reader<T>& reader) {
-    T message;
-    while (reader.take(message)) {
+    do {
+      reader.take(messages, kTakeBatch);
       const auto now = Clock::now();
       std::lock_guard lock(mutex);
-      const std::uint64_t seq = get_seq(message);
-      if (seq == kStopSeq) {
-        done.set();
-        continue;
+      for (const T& message : messages) {
+        const std::uint64_t seq = get_seq(message);
+        if (seq == kStopSeq || (received > 0 && now - first > window)) {
+          if (cpu_end == 0) cpu_end = process_cpu_s();
+          done.set();
+          continue;
+        }
+        if (received == 0) {
+          first = now;
+          cpu_start = process_cpu_s();
+        }
+        ++received;
+        lowest = std::min(lowest, seq);
+        highest = std::max(highest, seq);
       }
-      if (received == 0) first = now;
-      if (now - first > window) {
-        done.set();
-        continue;
-      }
-      ++received;
-      lowest = std::min(lowest, seq);
-      highest = std::max(highest, seq);
-    }
+    } while (messages.size() == kTakeBatch);  // a short batch: the reader is empty
   }); };
   auto reader = tr::make_reader<T>(participant, kDataTopic, throughput_qos(), on_data);
   gate.open(reader);
@@ -274,9 +306,10 @@ template <class T> int run_sink(tr::Participant& participant, double seconds) {
     return 1;
   }
   // A stop message before the window ended means the source stopped early: rate over what we saw.
-  std::printf("RESULT received=%llu sent=%llu seconds=%.6f\n", static_cast<unsigned long long>(received),
+  std::printf("RESULT received=%llu sent=%llu seconds=%.6f cpu_us=%.3f\n", static_cast<unsigned long long>(received),
               static_cast<unsigned long long>(highest - lowest + 1),
-              std::min(seconds, std::chrono::duration<double>(Clock::now() - first).count()));
+              std::min(seconds, std::chrono::duration<double>(Clock::now() - first).count()),
+              (cpu_end - cpu_start) * 1e6 / static_cast<double>(received));
   return 0;
 }
 

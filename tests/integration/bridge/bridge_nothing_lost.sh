@@ -20,11 +20,11 @@ n=60000
   --settle 1 --timeout 150 --status-out "$work/status.txt" > "$work/checker.out" 2>&1 &
 checker=$!
 pids+=($checker)
-"$bin/plumb-bridge" --transport "$transport" --device "$link" --baud 921600 --reliable --calibration "$work/cal.cal" \
+"$bin/plumb-bridge" --transport "$transport" --device "$link" --tool-id sim --baud 921600 --reliable --calibration "$work/cal.cal" \
   --no-calibration-topic --backoff-min 0.05 --backoff-max 0.2 --wait-subscribers 20 > "$work/bridge.out" 2>&1 &
 bridge=$!
 pids+=($bridge)
-sleep 2
+wait_bridge_matched "$work/bridge.out" || { show_logs; echo "FAIL - no reader matched the bridge"; exit 1; }
 "$bin/plumb-sim" --serial "$link" --rate-hz 1000 --duration 60 --batch 1 --rpm 60 --inclination 2 --azimuth 200 \
   --no-truth --tool-id sim > "$work/sim.out" 2>&1 || { show_logs; exit 1; }
 sleep 1

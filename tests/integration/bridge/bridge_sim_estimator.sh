@@ -30,11 +30,11 @@ pids+=($echo_pid)
   --plugin compensated --window 5 --count 2 --timeout 120 -q > "$work/host.out" 2>&1 &
 host=$!
 pids+=($host)
-"$bin/plumb-bridge" --transport "$transport" --device "$link" --reliable --calibration "$work/identity.cal" \
+"$bin/plumb-bridge" --transport "$transport" --device "$link" --tool-id sim --reliable --calibration "$work/identity.cal" \
   --no-calibration-topic --backoff-min 0.05 --backoff-max 0.2 --wait-subscribers 20 > "$work/bridge.out" 2>&1 &
 bridge=$!
 pids+=($bridge)
-sleep 2
+wait_bridge_matched "$work/bridge.out" || { show_logs; echo "FAIL - no reader matched the bridge"; exit 1; }
 "$bin/plumb-sim" --serial "$link" --inclination $inc --azimuth $azi --rpm 60 --duration 10.5 \
   --snr-accel 40 --snr-mag 40 --g 10 --field 48.4 --dip 45.5 --rate x4 --no-truth --tool-id sim \
   > "$work/sim.out" 2>&1 || { show_logs; exit 1; }

@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
       while (reader.take(batch)) {
         for (const auto& s : batch.samples) {
           got.push_back(s.seq);
-          if (!calibration_id.empty() && !(s.flags & topics::sample_flags::kCalibrated)) ++not_calibrated;
+          if (!calibration_id.empty() && !(s.flags & topics::SAMPLE_CALIBRATED)) ++not_calibrated;
         }
         if (!calibration_id.empty() && batch.calibration_id != calibration_id) ++wrong_id;
       }

@@ -1,5 +1,6 @@
 # Shared by the bridge integration tests: a work dir, background processes killed on exit,
 # and counter checks against the checker's status file.
+source "$(dirname "${BASH_SOURCE[0]}")/../wait.sh"
 work=$(mktemp -d)
 pids=()
 cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; rm -rf "$work"; }

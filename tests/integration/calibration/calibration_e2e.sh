@@ -8,6 +8,7 @@
 set -uo pipefail
 bin=$1 transport=$2
 export PLUMB_DOMAIN_ID=$3
+source "$(dirname "$0")/../wait.sh"
 work=$(mktemp -d)
 pids=()
 cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; rm -rf "$work"; }
@@ -39,7 +40,8 @@ $cal --procedure 6pos --sim-truth truth.txt --write-simulation acc_ > cal.out 2>
     --tool-id sim --calibration-id e2e-cal >> cal.out 2>&1 || { show_logs; echo "FAIL - calibration"; exit 1; }
 
 inc=30 azi=200 tf=40
-# run NAME COEFFS [sim error options...]: prints "inclination_error azimuth_error" of the estimate.
+# run NAME COEFFS [sim error options...]: writes "inclination_error azimuth_error" of the estimate
+# to NAME.err; any failure stops the whole script with the logs.
 run() {
   local name=$1 coeffs=$2; shift 2
   local link=$work/board_$name
@@ -51,11 +53,12 @@ run() {
     --window 10 --count 1 --timeout 120 --flush-after-idle 2 -q > "host_$name.out" 2>&1 &
   local host=$!
   pids+=($host)
-  "$bin/plumb-bridge" --transport "$transport" --device "$link" --reliable --calibration "$coeffs" \
+  "$bin/plumb-bridge" --transport "$transport" --device "$link" --tool-id sim --reliable --calibration "$coeffs" \
     --no-calibration-topic --backoff-min 0.05 --backoff-max 0.2 --wait-subscribers 20 > "bridge_$name.out" 2>&1 &
   local bridge=$!
   pids+=($bridge)
-  sleep 2
+  wait_bridge_matched "bridge_$name.out" ||
+    { show_logs; echo "FAIL - $name: the estimator's reader never matched the bridge"; exit 1; }
   "$bin/plumb-sim" --serial "$link" --inclination $inc --azimuth $azi --toolface $tf --rpm 0 --duration 10 \
     --sigma-accel 0.002 --sigma-mag 0.02 --g 9.80665 --field 48.4 --dip 45.5 --rate x4 --no-truth --tool-id sim \
     --temp 25 --seed 5 "$@" > "sim_$name.out" 2>&1 || { show_logs; exit 1; }
@@ -64,12 +67,16 @@ run() {
   kill -INT "$bridge"; wait "$bridge"
   awk -F, -v inc=$inc -v azi=$azi 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
     NF > 1 { di = $c["inclination_deg"] - inc; da = $c["azimuth_deg"] - azi; while (da > 180) da -= 360;
-             while (da <= -180) da += 360; printf "%.6f %.6f\n", (di < 0 ? -di : di), (da < 0 ? -da : da); exit }' "$name.csv"
+             while (da <= -180) da += 360; printf "%.6f %.6f\n", (di < 0 ? -di : di), (da < 0 ? -da : da); exit }' \
+    "$name.csv" > "$name.err"
 }
 errors=(--accel-bias $ab --accel-scale $as --mag-bias $mb --mag-scale $ms)
-read -r free_i free_a < <(run free identity.txt)
-read -r raw_i raw_a < <(run raw identity.txt "${errors[@]}")
-read -r cal_i cal_a < <(run calibrated coeffs.txt "${errors[@]}")
+run free identity.txt
+run raw identity.txt "${errors[@]}"
+run calibrated coeffs.txt "${errors[@]}"
+read -r free_i free_a < free.err
+read -r raw_i raw_a < raw.err
+read -r cal_i cal_a < calibrated.err
 echo "static estimator, I=$inc A=$azi: |error| inclination / azimuth (deg)"
 echo "  error-free sensors     $free_i / $free_a"
 echo "  errors, uncalibrated   $raw_i / $raw_a"

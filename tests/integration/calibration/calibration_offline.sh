@@ -54,7 +54,11 @@ expect_failure "bad orientation names file and line" "badorient.csv:3: column 'o
 printf 'name,start_s,orientation\n' > nocol.csv
 expect_failure "station list without end_s" "lacks column 'end_s'" "$cal" --procedure 6pos --input 6pos_sensor.csv --stations nocol.csv
 expect_failure "unknown procedure" "procedure" "$cal" --procedure 7pos --input x --stations y
-expect_failure "missing sensor file" "nope.csv" "$cal" --procedure 6pos --input nope.csv --stations 6pos_stations.csv
+expect_failure "missing sensor file" "nope.csv" "$cal" --procedure 6pos --input nope.csv --stations 6pos_stations.csv \
+  --report rnope.txt
+grep -q 'FAILED.*nope.csv' rnope.txt && pass "report written when the input cannot be read" || fail "no report for unreadable input"
+expect_failure "max error too strict" "exceeds the tolerance" \
+  "$cal" --procedure 6pos --input 6pos_sensor.csv --stations 6pos_stations.csv --output bad.txt --max-error-deg 1e-7
 [ ! -e bad.txt ] && pass "no coefficients from any failure" || fail "coefficients written by a failure"
 "$cal" --help >/dev/null && pass "--help" || fail "--help"
 finish

@@ -1,6 +1,7 @@
 // plumb-test-peer: one side of a cross-process (and cross-vendor) transport test. The writer
-// publishes one message of every topic type with every field set (test_messages.hpp); the reader
-// receives them and checks each one field by field. Exit status 0 means every check passed.
+// publishes one message of every topic type of idl/'s topic table with every field set
+// (test_messages.hpp); the reader receives them and checks each one field by field. Exit status 0
+// means every check passed. A topic type added to idl/ is in the test without code here.
 #include <CLI/CLI.hpp>
 
 #include <atomic>
@@ -57,11 +58,11 @@ template <class T> Case make_case(std::string topic, transport::Qos qos, T expec
   c.topic = topic;
   c.qos = qos;
   c.make_writer = [topic, qos](transport::Participant& p) {
-    return p.create_writer(transport::TopicTraits<T>::type, topic, qos);
+    return p.create_writer(topics::type_support<T>(), topic, qos);
   };
   c.write = [expected](transport::RawWriter& w) { w.write(&expected); };
   c.make_reader = [topic, qos](transport::Participant& p, std::function<void()> on_data) {
-    return p.create_reader(transport::TopicTraits<T>::type, topic, qos, std::move(on_data));
+    return p.create_reader(topics::type_support<T>(), topic, qos, std::move(on_data));
   };
   c.take_and_check = [expected](transport::RawReader& r) -> std::optional<std::string> {
     T got;
@@ -71,16 +72,32 @@ template <class T> Case make_case(std::string topic, transport::Qos qos, T expec
   return c;
 }
 
+// The table's QoS, except that the test needs every message: best-effort topics become reliable.
+transport::Qos test_qos(const std::string& topic) {
+  const transport::Qos qos = transport::default_qos_for_topic(topic);
+  return qos.reliability == transport::Reliability::BestEffort ? transport::Qos::reliable_stream() : qos;
+}
+
+// One full message of type T on the first topic of the table that carries it ("<prefix>test" for a prefix).
+template <class T> Case table_case() {
+  for (const auto& e : topics::kTopicTable) {
+    if (*e.type != topics::type_support<T>()) continue;
+    const std::string topic = e.prefix ? std::string(e.name) + "test" : e.name;
+    return make_case(topic, test_qos(topic), test::full<T>());
+  }
+  throw transport::Error(std::string("no topic carries ") + topics::type_support<T>().type_name);
+}
+
+template <class... T> void add_table_cases(std::vector<Case>& cases, topics::TypeList<T...>) {
+  (cases.push_back(table_case<T>()), ...);
+}
+
 std::vector<Case> cases_for(const Options& o) {
   std::vector<Case> cases;
   if (o.type == "all") {
-    // Sensor topics are best-effort by default; the test needs every message, so reliable here.
-    cases.push_back(make_case(names::kSensorRaw, transport::Qos::reliable_stream(), test::full_sensor_batch()));
-    cases.push_back(make_case(names::kSensorCalibrated, transport::Qos::reliable_stream(), test::empty_sensor_batch()));
-    cases.push_back(make_case(kTestAttitudeTopic, transport::default_qos_for_topic(kTestAttitudeTopic), test::full_attitude()));
-    cases.push_back(make_case(names::kCalibration, transport::default_qos_for_topic(names::kCalibration), test::full_calibration()));
-    cases.push_back(make_case(names::kStatus, transport::default_qos_for_topic(names::kStatus), test::full_status()));
-    cases.push_back(make_case(names::kSimTruth, transport::default_qos_for_topic(names::kSimTruth), test::full_truth()));
+    add_table_cases(cases, topics::TopicTypes{});
+    // The other edge: no samples, empty strings.
+    cases.push_back(make_case(names::kSensorCalibrated, test_qos(names::kSensorCalibrated), test::empty_sensor_batch()));
   } else if (o.type == "late-calibration") {
     cases.push_back(make_case(names::kCalibration, transport::default_qos_for_topic(names::kCalibration), test::full_calibration()));
   } else if (o.type == "attitude") {
@@ -145,7 +162,8 @@ int run_writer(const Options& o, transport::Participant& participant, std::vecto
   // A writer sees the reader before the reader sees the writer, and a volatile reader drops what
   // was written before it knew the writer. So wait for the reader's word that it matched every
   // writer (a transient-local message, so it cannot be missed either).
-  auto ready = participant.create_reader(transport::TopicType::ComponentStatus, kReadyTopic, transport::Qos::calibration());
+  auto ready = participant.create_reader(topics::type_support<topics::ComponentStatus>(), kReadyTopic,
+                                         transport::Qos::calibration());
   auto reader_ready = [&] {
     plumb::topics::ComponentStatus status;
     return ready->take(&status);
@@ -186,7 +204,8 @@ int run_reader(const Options& o, transport::Participant& participant, std::vecto
       std::cerr << kProgram << ": FAILED no writer matched every topic within " << o.timeout_s << " s\n";
       return 1;
     }
-    ready = participant.create_writer(transport::TopicType::ComponentStatus, kReadyTopic, transport::Qos::calibration());
+    ready = participant.create_writer(topics::type_support<topics::ComponentStatus>(), kReadyTopic,
+                                      transport::Qos::calibration());
     plumb::topics::ComponentStatus status;
     status.component = kProgram;
     status.state = "ready";

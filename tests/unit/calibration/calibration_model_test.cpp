@@ -4,6 +4,7 @@
 #include <random>
 #include <sstream>
 
+#include <Eigen/LU>
 #include <gtest/gtest.h>
 
 #include "plumb/core/calibration_model.hpp"
@@ -41,6 +42,60 @@ void expect_identical(const TriadModel& a, const TriadModel& b) {
   EXPECT_TRUE(a.second_order == b.second_order);
   EXPECT_TRUE(a.bias_temp == b.bias_temp);
   EXPECT_TRUE(a.scale_temp == b.scale_temp);
+  EXPECT_TRUE(a.bias_temp2 == b.bias_temp2);
+  EXPECT_TRUE(a.bias_temp3 == b.bias_temp3);
+  EXPECT_TRUE(a.sensor_scale_temp1 == b.sensor_scale_temp1);
+  EXPECT_TRUE(a.sensor_scale_temp2 == b.sensor_scale_temp2);
+  EXPECT_TRUE(a.sensor_scale_temp3 == b.sensor_scale_temp3);
+}
+
+// Version 2: the sensors' own temperature terms; odd seeds have them, even seeds are version 1.
+CalibrationModel random_model_v2(std::uint64_t seed) {
+  CalibrationModel m = random_model(seed);
+  if (seed % 2) {
+    m.accelerometer.bias_temp2 = 1e-6 * Eigen::Vector3d::Random();
+    m.accelerometer.bias_temp3 = 1e-9 * Eigen::Vector3d::Random();
+    m.accelerometer.sensor_scale_temp1 = 1e-5 * Eigen::Vector3d::Random();
+    m.accelerometer.sensor_scale_temp2 = 1e-8 * Eigen::Vector3d::Random();
+    m.accelerometer.sensor_scale_temp3 = 1e-11 * Eigen::Vector3d::Random();
+  }
+  return m;
+}
+
+TEST(CalibrationModelFile, VersionTwoRoundTripIsExactAndVersionOneStaysVersionOne) {
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    const CalibrationModel m = random_model_v2(seed);
+    std::stringstream s;
+    write_calibration(s, m);
+    const std::string text = s.str();
+    const bool v2 = seed % 2;
+    EXPECT_NE(text.find(v2 ? "format plumb-calibration 2\n" : "format plumb-calibration 1\n"), std::string::npos);
+    // A version-1 model writes no version-2 key: its file is what it always was.
+    EXPECT_EQ(text.find("sensor_scale_temp") != std::string::npos, v2);
+    const CalibrationModel r = parse_calibration(s, "memory");
+    expect_identical(r.accelerometer, m.accelerometer);
+    expect_identical(r.magnetometer, m.magnetometer);
+  }
+}
+
+// Version 2's sensor terms: the sensor's own scale multiplies its whole output, bias included
+// (METHODS.md 3: output_i = k_i(T) (a_i + b_i(T) + ...)), before the matrix S.
+TEST(CalibrationModel, VersionTwoScaleDriftActsOnTheSensorsOutput) {
+  TriadModel t;
+  t.sensitivity << 2, 0.1, 0, 0, 2, 0, 0.05, 0, 2;
+  t.bias = Eigen::Vector3d(0.1, -0.2, 0.3);
+  t.bias_temp2 = Eigen::Vector3d(1e-5, 0, 0);
+  t.sensor_scale_temp1 = Eigen::Vector3d(1e-3, -2e-3, 0);
+  const double dT = 50;
+  const Eigen::Vector3d a(1, -2, 9);
+  // The sensor's view: u = s .* (b(dT) + S^-1 a), s = 1 + s1 dT.
+  const Eigen::Vector3d s(1 + 1e-3 * dT, 1 - 2e-3 * dT, 1);
+  const Eigen::Vector3d b = t.bias + Eigen::Vector3d(1e-5 * dT * dT, 0, 0);
+  const Eigen::Vector3d u = s.cwiseProduct(b + t.sensitivity.inverse() * a);
+  EXPECT_LT((t.apply(u, dT) - a).norm(), 1e-12);
+  EXPECT_LT((t.raw_for(a, dT) - u).norm(), 1e-12);
+  EXPECT_TRUE(t.has_version2_terms());
+  EXPECT_FALSE(t.is_identity());
 }
 
 TEST(CalibrationModelFile, RoundTripIsExact) {
@@ -78,7 +133,10 @@ TEST(CalibrationModelFile, BadLinesAreNamed) {
   EXPECT_NE(parse_error("accel.bias 1 2 x\n").find("coeffs.txt:1:"), std::string::npos);
   EXPECT_NE(parse_error("accel.bias 1 2 nan\n").find("not finite"), std::string::npos);
   EXPECT_NE(parse_error("accel.bias 1 2 3\naccel.bias 1 2 3\n").find("given twice"), std::string::npos);
-  EXPECT_NE(parse_error("format plumb-calibration 2\n").find("version 2"), std::string::npos);
+  EXPECT_NE(parse_error("format plumb-calibration 3\n").find("version 3 is not supported"), std::string::npos);
+  // Version-2 terms mean nothing in a file that says version 1, wherever the format line is.
+  EXPECT_EQ(parse_error("accel.bias_temp2 1 2 3\nformat plumb-calibration 1\n"),
+            "coeffs.txt:1: 'accel.bias_temp2' is a version-2 term but the file says 'format plumb-calibration 1'");
   EXPECT_NE(parse_error("temp_range_c 50 10\n").find("min < max"), std::string::npos);
   EXPECT_NE(parse_error("# nothing\n\n").find("no calibration coefficients"), std::string::npos);
   EXPECT_EQ(parse_error("accel.bias +1 -2e-3 3 # trailing comment\n"), "");
@@ -130,6 +188,33 @@ TEST(CalibrationModel, SecondOrderRootIsTheOneNearTheLinearValue) {
   EXPECT_LT((t.apply(w, 0) - a).norm(), 1e-12);
   EXPECT_TRUE(TriadModel{}.is_identity());
   EXPECT_FALSE(t.is_identity());
+}
+
+// The units of the package the coefficients were made for (docs/calibration.md "Binding").
+TEST(CalibrationModel, UnitsLinesRoundTripAndVersionOneFilesLoadWithoutThem) {
+  CalibrationModel m;
+  m.tool_id = "T1";
+  m.accel_units = "V";
+  m.mag_units = "counts";
+  std::stringstream file;
+  write_calibration(file, m);
+  EXPECT_NE(file.str().find("accel_units V\n"), std::string::npos) << file.str();
+  const auto back = parse_calibration(file, "units.txt");
+  EXPECT_EQ(back.accel_units, "V");
+  EXPECT_EQ(back.mag_units, "counts");
+
+  std::istringstream v1("format plumb-calibration 1\ntool_id T1\naccel.bias 0 0 0\n");
+  const auto old = parse_calibration(v1, "v1.txt");
+  EXPECT_EQ(old.accel_units, "");  // not stated: only the bridge's |G| check can tell
+  EXPECT_EQ(old.mag_units, "");
+
+  std::istringstream bad("accel_units metres per second\n");
+  try {
+    parse_calibration(bad, "bad.txt");
+    FAIL() << "two words accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.txt:1: 'accel_units' needs one word"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

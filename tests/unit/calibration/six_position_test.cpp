@@ -1,6 +1,7 @@
 // METHODS.md 3 on simulated packages with known coefficients.
 #include <gtest/gtest.h>
 
+#include "plumb/calibration/triad_fit.hpp"
 #include "sim_support.hpp"
 
 namespace plumb {
@@ -95,6 +96,24 @@ TEST_F(SixPositionBadInput, ToolUpsideDownIsFoundAndNamed) {
 TEST_F(SixPositionBadInput, StationWithoutOrientation) {
   plans[1].orientation = "any";
   expect_error(run(), "station 'p-x' has no orientation");
+}
+
+// The live procedure checks each station before recording it, with the offline rule: a station
+// alone (no other to tell the offsets) is judged by its raw direction.
+TEST(CheckOrientations, AStationAloneIsJudgedByItsRawDirection) {
+  calibration::StationAverage s;
+  s.station.name = "p+x";
+  s.station.orientation = calibration::parse_orientation("+x");
+  s.accel = Eigen::Vector3d(0.01, 0.02, -2.45);  // volts, z axis pointing down
+  try {
+    calibration::check_orientations({&s}, 10);
+    FAIL() << "a station with z down was taken for +x";
+  } catch (const calibration::CalibrationError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("station 'p+x' (+x): the tool reads as if at -z"), std::string::npos) << what;
+  }
+  s.accel = Eigen::Vector3d(2.45, 0.01, 0.02);
+  EXPECT_NO_THROW(calibration::check_orientations({&s}, 10));
 }
 
 }  // namespace

@@ -1,9 +1,11 @@
 // The comparison library's plumbing: progress, tables, CSV, SVG and errors (small grid).
 #include <gtest/gtest.h>
 
+#include <iostream>
 #include <sstream>
 
 #include "plumb/compare/compare.hpp"
+#include "plumb/compare/drilling.hpp"
 
 namespace plumb::compare {
 namespace {
@@ -44,7 +46,9 @@ TEST(CompareLibrary, WritesTableCsvAndSvg) {
   write_report(table, r);
   EXPECT_NE(table.str().find("compensated"), std::string::npos);
   EXPECT_NE(table.str().find("platform rotating"), std::string::npos);
+  EXPECT_NE(table.str().find("cover"), std::string::npos);
   write_csv(csv, r);
+  EXPECT_NE(csv.str().find("azimuth_coverage,inclination_coverage\n"), std::string::npos);
   std::size_t lines = 0;
   for (char ch : csv.str()) lines += ch == '\n';
   EXPECT_EQ(lines, 1u + 2 * 3);
@@ -60,12 +64,36 @@ TEST(CompareLibrary, WritesTableCsvAndSvg) {
   EXPECT_NE(empty.str().find("no case"), std::string::npos);
 }
 
+// The coverage column (issue 14): RMS of error / reported sd, 1 for honest sds. Far from vertical,
+// where the old small-angle sd of `compensated` was 7-20x too small, 2 x 36 records per case.
+TEST(CompareLibrary, CoverageColumnNearOneForHonestSigmasFarFromVertical) {
+  CompareConfig c;
+  c.plugins = {"static", "compensated"};
+  c.inclinations_deg = {30, 89};
+  c.rpms = {0};
+  c.snr_accel_db = {20};
+  c.seeds = 2;
+  const CompareResult r = run_compare(c);
+  ASSERT_EQ(r.cases.size(), 2u);
+  for (const auto& k : r.cases) {
+    for (const auto& p : k.plugins) {
+      SCOPED_TRACE(testing::Message() << p.plugin << " I " << k.inclination_deg);
+      EXPECT_EQ(p.valid, p.records);
+      // 72 records: the RMS of a unit normal scatters by 8 %.
+      EXPECT_GT(p.azimuth_coverage, 0.75);
+      EXPECT_LT(p.azimuth_coverage, 1.3);
+      EXPECT_GT(p.inclination_coverage, 0.75);
+      EXPECT_LT(p.inclination_coverage, 1.3);
+    }
+  }
+}
+
 TEST(CompareLibrary, UnknownPluginAndBadParameterAreErrors) {
   CompareConfig c = small();
   c.plugins = {"compensated", "nonexistent"};
   EXPECT_THROW(run_compare(c), std::runtime_error);
   c = small();
-  c.plugin_parameters["static"] = {{"max_turn", "-3"}};
+  c.assignments = {"static.max_turn=-3"};
   EXPECT_THROW(run_compare(c), estimator::ParameterError);
 }
 
@@ -92,6 +120,46 @@ TEST(CompareLibrary, SingleScenarioKeepsItsNoise) {
   EXPECT_EQ(r.cases[0].plugins[0].valid, 3);
   // Three records: each error within 4 bounds.
   EXPECT_LE(r.cases[0].plugins[0].max_azimuth_error_deg, 4 * r.cases[0].crb_azimuth_deg);
+}
+
+}  // namespace
+}  // namespace plumb::compare
+
+
+namespace plumb::compare {
+namespace {
+
+// The navigator on the 16-minute reference run (issue 8): attitude and end position inside the
+// issue's bounds, and far inside the source's 2 deg.
+TEST(DrillingCompare, TacticalNavigatorMeetsTheIssueBounds) {
+  DrillingCompareConfig c;
+  c.grades = {"tactical"};
+  c.rates_hz = {10};
+  c.with_depth = {true};
+  const auto runs = run_drilling_compare(c);
+  ASSERT_EQ(runs.size(), 1u);
+  const auto& r = runs.front();
+  EXPECT_GT(r.valid, 900) << r.first_invalid_reason;
+  EXPECT_LT(r.max_attitude_deg, 0.2);
+  EXPECT_LT(r.end_position_percent(), 1.0);
+  EXPECT_GT(r.attitude_coverage, 0.5);
+  EXPECT_LT(r.attitude_coverage, 1.5);
+  // Per angle too (issue 14): the navigator filter's sds beside the windowed plugins'.
+  for (double cov : {r.inclination_coverage, r.azimuth_coverage, r.toolface_coverage}) {
+    EXPECT_GT(cov, 0.3);
+    EXPECT_LT(cov, 2.0);
+  }
+  std::ostringstream table;
+  write_drilling_report(table, runs);
+  std::cout << table.str();
+  EXPECT_NE(table.str().find("tactical"), std::string::npos);
+  EXPECT_NE(table.str().find("c.azi"), std::string::npos);
+}
+
+TEST(DrillingCompare, UnknownParameterIsRefusedBeforeAnyRun) {
+  DrillingCompareConfig c;
+  c.assignments = {"no_such_parameter=1"};
+  EXPECT_THROW(run_drilling_compare(c), estimator::ParameterError);
 }
 
 }  // namespace

@@ -4,9 +4,9 @@
 #include <cmath>
 
 #include "plumb/core/attitude.hpp"
-#include "plumb/estimators/cramer_rao.hpp"
+#include "plumb/windowed/cramer_rao.hpp"
 
-namespace plumb::estimators {
+namespace plumb::windowed {
 namespace {
 
 CrbCase reference(double inc, double az, double rpm, double snr_a_db) {
@@ -70,4 +70,4 @@ TEST(CramerRao, SigmaFromSnrFollowsConventions) {
 }
 
 }  // namespace
-}  // namespace plumb::estimators
+}  // namespace plumb::windowed

@@ -5,9 +5,9 @@
 #include <complex>
 
 #include "plumb/core/attitude.hpp"
-#include "plumb/estimators/demodulation.hpp"
+#include "plumb/windowed/demodulation.hpp"
 
-namespace plumb::estimators {
+namespace plumb::windowed {
 namespace {
 
 using C = std::complex<double>;
@@ -61,4 +61,4 @@ TEST(Demodulation, WholeRevolutionsEndCountsTurns) {
 }
 
 }  // namespace
-}  // namespace plumb::estimators
+}  // namespace plumb::windowed

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <random>
 
-#include "plumb/estimators/fast_math.hpp"
+#include "plumb/windowed/fast_math.hpp"
 
-namespace plumb::estimators {
+namespace plumb::windowed {
 namespace {
 
 TEST(FastAtan2, MatchesLibmEverywhere) {
@@ -32,4 +32,4 @@ TEST(FastAtan2, AxesAndOrigin) {
 }
 
 }  // namespace
-}  // namespace plumb::estimators
+}  // namespace plumb::windowed

@@ -6,9 +6,9 @@
 #include <random>
 
 #include "plumb/core/attitude.hpp"
-#include "plumb/estimators/platform_angle.hpp"
+#include "plumb/windowed/platform_angle.hpp"
 
-namespace plumb::estimators {
+namespace plumb::windowed {
 namespace {
 
 // Radial field of amplitude r whose magnetic toolface follows angle(t), plus white noise.
@@ -102,4 +102,4 @@ TEST(LocalQuadratic, ReproducesAQuadraticExactly) {
 }
 
 }  // namespace
-}  // namespace plumb::estimators
+}  // namespace plumb::windowed

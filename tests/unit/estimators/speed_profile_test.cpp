@@ -9,7 +9,7 @@
 
 #include "estimator_test_support.hpp"
 #include "plumb/core/attitude.hpp"
-#include "plumb/estimators/cramer_rao.hpp"
+#include "plumb/windowed/cramer_rao.hpp"
 
 namespace plumb {
 namespace {
@@ -51,10 +51,10 @@ Errors sweep(const std::string& plugin, const std::string& profile) {
   e.az_rms = std::sqrt(az2 / std::max(e.valid, 1));
   e.inc_rms = std::sqrt(inc2 / std::max(e.valid, 1));
   sim::Scenario ref = sim::Scenario::reference(kInclination, 0, 60, kSnr);
-  estimators::CrbCase c;
+  windowed::CrbCase c;
   c.g = ref.g, c.total_b = ref.total_b, c.dip_deg = ref.dip_deg, c.inclination_deg = kInclination, c.rpm = 60;
   c.sigma_accel = ref.sigma_accel(), c.sigma_mag = ref.sigma_mag();
-  const auto crb = estimators::cramer_rao_bound(c);
+  const auto crb = windowed::cramer_rao_bound(c);
   e.crb_az = crb.azimuth_deg, e.crb_inc = crb.inclination_deg;
   return e;
 }

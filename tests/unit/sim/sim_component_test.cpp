@@ -12,7 +12,7 @@
 
 #include "csv_sink.hpp"
 #include "pacing.hpp"
-#include "plumb/core/csv.hpp"
+#include "plumb/csv/files.hpp"
 #include "scenario_options.hpp"
 
 namespace plumb::sim_component {
@@ -86,15 +86,6 @@ TEST(PlumbSimOptions, BadValuesAreRejectedNamingTheOption) {
   }
 }
 
-TEST(PlumbSimPacing, SpeedText) {
-  EXPECT_EQ(parse_speed("realtime"), 1.0);
-  EXPECT_EQ(parse_speed("max"), 0.0);
-  EXPECT_EQ(parse_speed("x10"), 10.0);
-  EXPECT_EQ(parse_speed("2.5x"), 2.5);
-  EXPECT_EQ(parse_speed("4"), 4.0);
-  for (const char* bad : {"", "x", "fast", "x0", "-2", "x1e999", "3y"}) EXPECT_THROW(parse_speed(bad), std::invalid_argument) << bad;
-}
-
 TEST(PlumbSimCsv, FilesReadBackAsTheSimulatedSamples) {
   const auto dir = std::filesystem::temp_directory_path() / ("plumb_sim_csv_test_" + std::to_string(::getpid()));
   sim::Scenario sc = sim::Scenario::reference(2, 40, 60, 10, 3);
@@ -129,6 +120,99 @@ TEST(PlumbSimCsv, FilesReadBackAsTheSimulatedSamples) {
     EXPECT_TRUE(close(truth_back[k].toolface_deg, truth[k].toolface_deg));
     EXPECT_TRUE(close(truth_back[k].azimuth_deg, 40));
   }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(PlumbSimDrillingOptions, ScenarioGradeAndOverrides) {
+  CLI::App app;
+  ScenarioOptions options;
+  add_scenario_options(app, options);
+  std::vector<std::string> args{"--scenario", "drilling", "--grade", "mems", "--rate-hz", "10", "--seed", "4",
+                                "--latitude", "50", "--sigma-mag", "0.2", "--mag-disturbance", "1:1:0.5",
+                                "--mag-disturbance", "3:-2:0", "--depth-noise", "0.01", "--depth-step", "0.05",
+                                "--gyro-bias", "1e-5,0,-1e-5", "--gyro-range", "400", "--inclination", "88"};
+  std::reverse(args.begin(), args.end());
+  app.parse(args);
+  ASSERT_TRUE(is_drilling(options));
+  const sim::DrillingScenario s = make_drilling_scenario(app, options);
+  EXPECT_EQ(s.grade.name, "mems");
+  EXPECT_EQ(s.grade.gyro_range_deg_s, 400.0);
+  EXPECT_EQ(s.sample_rate_hz, 10.0);
+  EXPECT_EQ(s.seed, 4u);
+  EXPECT_EQ(s.latitude_deg, 50.0);
+  EXPECT_EQ(s.magnetometer.sigma_uT, 0.2);
+  ASSERT_EQ(s.magnetometer.disturbances.size(), 2u);
+  EXPECT_EQ(s.magnetometer.disturbances[1].stop_index, 3u);
+  EXPECT_EQ(s.magnetometer.disturbances[1].delta_total_uT, -2.0);
+  EXPECT_EQ(s.depth.sigma_m, 0.01);
+  EXPECT_EQ(s.depth.quantum_m, 0.05);
+  EXPECT_EQ(*s.gyro_bias, Eigen::Vector3d(1e-5, 0, -1e-5));
+  EXPECT_EQ(s.plan.inclination_deg, 88.0);
+  EXPECT_EQ(s.plan.segments.size(), sim::DrillingScenario::reference(s.grade).plan.segments.size());
+  EXPECT_EQ(s.duration_s(), 960.0);
+}
+
+TEST(PlumbSimDrillingOptions, OptionsOfTheOtherKindAreRefusedByName) {
+  struct Case {
+    std::vector<std::string> args;
+    std::string named;
+  };
+  for (const auto& c : std::vector<Case>{{{"--scenario", "drilling", "--rpm", "60"}, "--rpm"},
+                                         {{"--scenario", "drilling", "--duration", "5"}, "--duration"},
+                                         {{"--scenario", "drilling-survey", "--temp", "30"}, "--temp"},
+                                         {{"--scenario", "drilling", "--grade", "cheap"}, "--grade"},
+                                         {{"--scenario", "drilling", "--mag-disturbance", "9:1:0"}, "stop 9"},
+                                         {{"--scenario", "drilling", "--mag-disturbance", "1:1"}, "--mag-disturbance"},
+                                         {{"--scenario", "drilling", "--gyro-range", "0"}, "--gyro-range"},
+                                         {{"--grade", "mems"}, "--grade"},
+                                         {{"--no-mag"}, "--no-mag"}}) {
+    CLI::App app;
+    ScenarioOptions options;
+    add_scenario_options(app, options);
+    auto reversed = c.args;
+    std::reverse(reversed.begin(), reversed.end());
+    app.parse(reversed);
+    try {
+      if (is_drilling(options))
+        make_drilling_scenario(app, options);
+      else
+        make_scenario(app, options);
+      ADD_FAILURE() << "accepted " << c.named;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(c.named), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(PlumbSimCsv, DrillingRunWritesDepthAndPosition) {
+  const auto dir = std::filesystem::temp_directory_path() / ("plumb_sim_drill_csv_" + std::to_string(::getpid()));
+  sim::DrillingScenario sc = sim::DrillingScenario::survey_stop_and_go(sim::ImuGrade::tactical(), 10, 2);
+  std::vector<TruthSample> truth;
+  const auto samples = sim::DrillingSimulator(sc).run(&truth);
+  {
+    CsvSink sink(dir.string(), CsvColumns{true, false, true, true});
+    EXPECT_TRUE(sink.carries_depth());
+    sink.write(samples, truth);
+    sink.finish(false);
+  }
+  const auto back = csv::read_sensor_file((dir / "sensor.csv").string());
+  const auto truth_back = csv::read_truth_file((dir / "truth.csv").string());
+  ASSERT_EQ(back.size(), samples.size());
+  ASSERT_EQ(truth_back.size(), truth.size());
+  auto close = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b)); };
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    ASSERT_TRUE(back[k].flags & flags::kHasGyro);
+    ASSERT_TRUE(back[k].flags & flags::kHasDepth);
+    ASSERT_FALSE(back[k].flags & flags::kHasTemperature);
+    EXPECT_TRUE(close(back[k].depth_m, samples[k].depth_m));
+    for (int i = 0; i < 3; ++i) EXPECT_TRUE(close(back[k].w[i], samples[k].w[i]));
+    ASSERT_TRUE(truth_back[k].has_position);
+    EXPECT_TRUE(close(truth_back[k].north_m, truth[k].north_m));
+    EXPECT_TRUE(close(truth_back[k].down_m, truth[k].down_m));
+    EXPECT_TRUE(close(truth_back[k].vd_mps, truth[k].vd_mps));
+    EXPECT_TRUE(close(truth_back[k].depth_m, truth[k].depth_m));
+  }
+  EXPECT_NEAR(truth_back.back().depth_m, 9.0, 1e-9);
   std::filesystem::remove_all(dir);
 }
 

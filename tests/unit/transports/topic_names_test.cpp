@@ -1,23 +1,44 @@
-// The topic naming conventions: type and QoS follow from the name.
+// The topic table generated from the `// @topic` lines of idl/: type and QoS follow from the name.
 #include <gtest/gtest.h>
 
 #include "plumb/transport/topic_names.hpp"
 
 namespace {
 
+using namespace plumb;
 using namespace plumb::transport;
 namespace names = topic_names;
 
+template <class T> const TypeSupport* type() { return &topics::type_support<T>(); }
+
+bool carries(const std::string& topic, const TypeSupport* expected) {
+  const TypeSupport* t = topic_type_for(topic);
+  return t != nullptr && *t == *expected;
+}
+
 TEST(TopicNames, TypeFollowsTheName) {
-  EXPECT_EQ(topic_type_for(names::kSensorRaw), TopicType::SensorBatch);
-  EXPECT_EQ(topic_type_for(names::kSensorCalibrated), TopicType::SensorBatch);
-  EXPECT_EQ(topic_type_for(names::attitude("compensated")), TopicType::Attitude);
-  EXPECT_EQ(topic_type_for(names::kCalibration), TopicType::CalibrationCoefficients);
-  EXPECT_EQ(topic_type_for(names::kStatus), TopicType::ComponentStatus);
-  EXPECT_EQ(topic_type_for(names::kSimTruth), TopicType::Truth);
-  EXPECT_FALSE(topic_type_for("plumb/attitude/").has_value());  // no estimator name
-  EXPECT_FALSE(topic_type_for("rt/chatter").has_value());
-  EXPECT_FALSE(topic_type_for("").has_value());
+  EXPECT_TRUE(carries(names::kSensorRaw, type<topics::SensorBatch>()));
+  EXPECT_TRUE(carries(names::kSensorCalibrated, type<topics::SensorBatch>()));
+  EXPECT_TRUE(carries(names::attitude("compensated"), type<topics::Attitude>()));
+  EXPECT_TRUE(carries(names::kCalibration, type<topics::CalibrationCoefficients>()));
+  EXPECT_TRUE(carries(names::kStatus, type<topics::ComponentStatus>()));
+  EXPECT_TRUE(carries(names::kSimTruth, type<topics::Truth>()));
+  EXPECT_EQ(topic_type_for("plumb/attitude/"), nullptr);  // no estimator name
+  EXPECT_EQ(topic_type_for("rt/chatter"), nullptr);
+  EXPECT_EQ(topic_type_for(""), nullptr);
+}
+
+TEST(TopicNames, NavigatorTopicsAreDeclaredInTheIdl) {
+  EXPECT_TRUE(carries(names::navigation("strapdown"), type<topics::Navigation>()));
+  EXPECT_EQ(names::navigation("strapdown"), "plumb/navigation/strapdown");
+  EXPECT_TRUE(carries(names::kDepth, type<topics::MeasuredDepth>()));
+  for (const char* topic : {"plumb/navigation/strapdown", "plumb/depth"}) {
+    const Qos qos = default_qos_for_topic(topic);
+    EXPECT_EQ(qos.reliability, Reliability::Reliable) << topic;
+    EXPECT_EQ(qos.durability, Durability::Volatile) << topic;
+    EXPECT_EQ(qos.history, History::KeepLast) << topic;
+    EXPECT_EQ(qos.depth, 64) << topic;
+  }
 }
 
 TEST(TopicNames, AttitudeTopicNamesTheEstimator) {
@@ -36,12 +57,28 @@ TEST(TopicNames, QosFollowsTheTable) {
   EXPECT_EQ(default_qos_for_topic("something/else").reliability, Reliability::Reliable);
 }
 
+TEST(TopicNames, TheTableMatchesTheFormerQosProfiles) {
+  auto same = [](const Qos& a, const Qos& b) {
+    return a.reliability == b.reliability && a.durability == b.durability && a.history == b.history && a.depth == b.depth;
+  };
+  EXPECT_TRUE(same(default_qos_for_topic(names::kSensorRaw), Qos::sensor_stream()));
+  EXPECT_TRUE(same(default_qos_for_topic(names::sensor("other")), Qos::sensor_stream()));
+  EXPECT_TRUE(same(default_qos_for_topic(names::attitude("x")), Qos::attitude()));
+  EXPECT_TRUE(same(default_qos_for_topic(names::kCalibration), Qos::calibration()));
+  EXPECT_TRUE(same(default_qos_for_topic(names::kStatus), Qos::status()));
+  EXPECT_TRUE(same(default_qos_for_topic(names::kSimTruth), Qos::attitude()));
+}
+
 TEST(TopicNames, TypeNamesAreTheScopedIdlNames) {
-  EXPECT_STREQ(type_name(TopicType::SensorBatch), "plumb::msg::SensorBatch");
-  EXPECT_STREQ(type_name(TopicType::Attitude), "plumb::msg::Attitude");
-  EXPECT_STREQ(type_name(TopicType::CalibrationCoefficients), "plumb::msg::CalibrationCoefficients");
-  EXPECT_STREQ(type_name(TopicType::ComponentStatus), "plumb::msg::ComponentStatus");
-  EXPECT_STREQ(type_name(TopicType::Truth), "plumb::msg::Truth");
+  EXPECT_STREQ(type<topics::SensorBatch>()->type_name, "plumb::msg::SensorBatch");
+  EXPECT_STREQ(type<topics::Attitude>()->type_name, "plumb::msg::Attitude");
+  EXPECT_STREQ(type<topics::CalibrationCoefficients>()->type_name, "plumb::msg::CalibrationCoefficients");
+  EXPECT_STREQ(type<topics::ComponentStatus>()->type_name, "plumb::msg::ComponentStatus");
+  EXPECT_STREQ(type<topics::Truth>()->type_name, "plumb::msg::Truth");
+  EXPECT_STREQ(type<topics::Navigation>()->type_name, "plumb::msg::Navigation");
+  EXPECT_STREQ(type<topics::MeasuredDepth>()->type_name, "plumb::msg::MeasuredDepth");
+  for (const TypeSupport* t : topics::kAllTypes) EXPECT_EQ(topics::find_type_support(t->type_name), t);
+  EXPECT_EQ(topics::find_type_support("plumb::msg::NoSuchType"), nullptr);
 }
 
 }  // namespace

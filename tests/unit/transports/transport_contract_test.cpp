@@ -68,9 +68,9 @@ TEST_P(TransportContract, RefusesStringsLongerThanTheirIdlBound) {
   auto p = participant();
   auto writer = make_writer<topics::Attitude>(*p, topic("plumb/attitude/bounds"), Qos::attitude());
   topics::Attitude a;
-  a.tool_id = std::string(topics::kToolIdMax, 'x');
-  a.estimator = std::string(topics::kNameMax, 'y');
-  a.reason = std::string(topics::kReasonMax, 'z');
+  a.tool_id = std::string(topics::Attitude::kToolIdMax, 'x');
+  a.estimator = std::string(topics::Counter::kNameMax, 'y');
+  a.reason = std::string(topics::Attitude::kReasonMax, 'z');
   EXPECT_NO_THROW(writer.write(a));  // exactly at the bound is fine
   for (auto field : {&topics::Attitude::tool_id, &topics::Attitude::estimator, &topics::Attitude::reason}) {
     topics::Attitude longer = a;
@@ -79,10 +79,10 @@ TEST_P(TransportContract, RefusesStringsLongerThanTheirIdlBound) {
   }
   auto status = make_writer<topics::ComponentStatus>(*p, topic("plumb/status"), Qos::status());
   topics::ComponentStatus s;
-  s.last_error = std::string(topics::kErrorMax + 1, 'e');
+  s.last_error = std::string(topics::ComponentStatus::kLastErrorMax + 1, 'e');
   EXPECT_THROW(status.write(s), Error);
   s.last_error.clear();
-  s.counters.push_back({std::string(topics::kNameMax + 1, 'c'), 1});
+  s.counters.push_back({std::string(topics::Counter::kNameMax + 1, 'c'), 1});
   EXPECT_THROW(status.write(s), Error);
 }
 
@@ -90,14 +90,14 @@ TEST_P(TransportContract, RefusesBatchesOverThirtyTwoSamples) {
   auto p = participant();
   auto writer = make_writer<topics::SensorBatch>(*p, topic("plumb/sensor/bounds"), Qos::sensor_stream());
   topics::SensorBatch batch;
-  batch.samples.resize(topics::kMaxSamplesPerBatch);
+  batch.samples.resize(topics::SensorBatch::kSamplesMax);
   EXPECT_NO_THROW(writer.write(batch));
-  batch.samples.resize(topics::kMaxSamplesPerBatch + 1);
+  batch.samples.resize(topics::SensorBatch::kSamplesMax + 1);
   EXPECT_THROW(writer.write(batch), Error);
 
   auto status = make_writer<topics::ComponentStatus>(*p, topic("plumb/status_bounds"), Qos::status());
   topics::ComponentStatus s;
-  s.counters.resize(topics::kMaxCountersPerStatus + 1);
+  s.counters.resize(topics::ComponentStatus::kCountersMax + 1);
   EXPECT_THROW(status.write(s), Error);
 }
 
@@ -168,6 +168,15 @@ TEST_P(TransportContract, DiscoversItsOwnTopicsWithTheirTypeNames) {
     EXPECT_EQ(t.writers, 1u);
     EXPECT_EQ(t.readers, 0u);
   }
+}
+
+TEST_P(TransportContract, RefusesATypeItWasNotBuiltWith) {
+  auto p = participant();
+  const TypeSupport unknown{"plumb::msg::NoSuchType", 1};
+  EXPECT_THROW(p->create_writer(unknown, topic("plumb/nosuch"), Qos::attitude()), Error);
+  // Same name, other layout: a plugin built from other IDL must not misread the message.
+  const TypeSupport other_layout{"plumb::msg::Attitude", topics::type_support<topics::Attitude>().layout_hash + 1};
+  EXPECT_THROW(p->create_reader(other_layout, topic("plumb/attitude/layout"), Qos::attitude()), Error);
 }
 
 INSTANTIATE_TEST_SUITE_P(Vendors, TransportContract, ::testing::Values(PLUMB_BUILT_TRANSPORTS),

@@ -14,12 +14,12 @@ void check_topic_name(const std::string& topic) {
 FastParticipant::FastParticipant(const ParticipantOptions& options)
     : state_(std::make_shared<ParticipantState>(options)) {}
 
-std::unique_ptr<RawWriter> FastParticipant::create_writer(TopicType type, const std::string& topic, const Qos& qos) {
+std::unique_ptr<RawWriter> FastParticipant::create_writer(const TypeSupport& type, const std::string& topic, const Qos& qos) {
   check_topic_name(topic);
   return std::make_unique<FastWriter>(state_, type, topic, qos);
 }
 
-std::unique_ptr<RawReader> FastParticipant::create_reader(TopicType type, const std::string& topic, const Qos& qos,
+std::unique_ptr<RawReader> FastParticipant::create_reader(const TypeSupport& type, const std::string& topic, const Qos& qos,
                                                           std::function<void()> on_data) {
   check_topic_name(topic);
   return std::make_unique<FastReader>(state_, type, topic, qos, std::move(on_data));

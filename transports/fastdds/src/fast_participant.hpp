@@ -11,8 +11,8 @@ class FastParticipant final : public Participant {
  public:
   explicit FastParticipant(const ParticipantOptions& options);
 
-  std::unique_ptr<RawWriter> create_writer(TopicType type, const std::string& topic, const Qos& qos) override;
-  std::unique_ptr<RawReader> create_reader(TopicType type, const std::string& topic, const Qos& qos,
+  std::unique_ptr<RawWriter> create_writer(const TypeSupport& type, const std::string& topic, const Qos& qos) override;
+  std::unique_ptr<RawReader> create_reader(const TypeSupport& type, const std::string& topic, const Qos& qos,
                                            std::function<void()> on_data) override;
   std::vector<DiscoveredTopic> discovered_topics() override;
 

@@ -6,9 +6,9 @@ namespace plumb::transport::fastdds {
 
 namespace dds = eprosima::fastdds::dds;
 
-FastReader::FastReader(std::shared_ptr<ParticipantState> state, TopicType type, const std::string& topic, const Qos& qos,
+FastReader::FastReader(std::shared_ptr<ParticipantState> state, const TypeSupport& type, const std::string& topic, const Qos& qos,
                        std::function<void()> on_data)
-    : state_(std::move(state)), codec_(make_codec(type)) {
+    : state_(std::move(state)), codec_(find_type(type).make_codec()) {
   const dds::DataReaderQos reader_qos_value = reader_qos(qos);
   dds::StatusMask mask = dds::StatusMask::none();
   if (on_data) {
@@ -33,6 +33,11 @@ FastReader::~FastReader() {
 bool FastReader::take(void* message) {
   std::lock_guard lock(take_mutex_);
   return codec_->take(*reader_, message);
+}
+
+std::size_t FastReader::take(std::size_t max, TakeTarget target) {
+  std::lock_guard lock(take_mutex_);
+  return codec_->take(*reader_, max, target);
 }
 
 bool FastReader::wait(std::chrono::nanoseconds timeout) {

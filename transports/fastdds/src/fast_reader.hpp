@@ -17,11 +17,12 @@ namespace plumb::transport::fastdds {
 
 class FastReader final : public RawReader {
  public:
-  FastReader(std::shared_ptr<ParticipantState> state, TopicType type, const std::string& topic, const Qos& qos,
+  FastReader(std::shared_ptr<ParticipantState> state, const TypeSupport& type, const std::string& topic, const Qos& qos,
              std::function<void()> on_data);
   ~FastReader() override;
 
   bool take(void* message) override;
+  std::size_t take(std::size_t max, TakeTarget target) override;
   bool wait(std::chrono::nanoseconds timeout) override;
   std::size_t matched_writers() const override;
 
@@ -38,7 +39,7 @@ class FastReader final : public RawReader {
   std::shared_ptr<ParticipantState> state_;
   std::unique_ptr<SampleCodec> codec_;
   std::unique_ptr<Listener> listener_;  // outlives reader_, which is deleted in the destructor body
-  std::mutex take_mutex_;               // the codec's sample is shared by concurrent take() calls
+  std::mutex take_mutex_;               // the codec's samples are shared by concurrent take() calls
   eprosima::fastdds::dds::DataReader* reader_ = nullptr;
 };
 

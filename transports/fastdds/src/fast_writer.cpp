@@ -6,8 +6,8 @@ namespace plumb::transport::fastdds {
 
 namespace dds = eprosima::fastdds::dds;
 
-FastWriter::FastWriter(std::shared_ptr<ParticipantState> state, TopicType type, const std::string& topic, const Qos& qos)
-    : state_(std::move(state)), codec_(make_codec(type)) {
+FastWriter::FastWriter(std::shared_ptr<ParticipantState> state, const TypeSupport& type, const std::string& topic, const Qos& qos)
+    : state_(std::move(state)), codec_(find_type(type).make_codec()) {
   const dds::DataWriterQos writer_qos_value = writer_qos(qos);
   std::lock_guard lock(state_->entity_mutex());
   dds::Topic* dds_topic = state_->topic(type, topic);

@@ -14,7 +14,7 @@ namespace plumb::transport::fastdds {
 
 class FastWriter final : public RawWriter {
  public:
-  FastWriter(std::shared_ptr<ParticipantState> state, TopicType type, const std::string& topic, const Qos& qos);
+  FastWriter(std::shared_ptr<ParticipantState> state, const TypeSupport& type, const std::string& topic, const Qos& qos);
   ~FastWriter() override;
 
   void write(const void* message) override;

@@ -79,17 +79,18 @@ ParticipantState::~ParticipantState() {
   dds::DomainParticipantFactory::get_instance()->delete_participant(participant_);
 }
 
-dds::Topic* ParticipantState::topic(TopicType type, const std::string& name) {
+dds::Topic* ParticipantState::topic(const TypeSupport& type, const std::string& name) {
   // Caller holds entity_mutex_.
-  dds::TypeSupport support = make_type_support(type);
-  const std::string type_name = support.get_type_name();
+  const std::string type_name = type.type_name;
   if (dds::TopicDescription* existing = participant_->lookup_topicdescription(name)) {
     if (existing->get_type_name() != type_name) {
       throw Error("topic " + name + " already exists here with type " + existing->get_type_name() + ", not " + type_name);
     }
     return static_cast<dds::Topic*>(existing);
   }
-  if (participant_->find_type(type_name).empty() && support.register_type(participant_) != ReturnCode_t::RETCODE_OK) {
+  // fastddsgen registers the scoped IDL name ("plumb::msg::Attitude"), the same string Cyclone uses.
+  if (participant_->find_type(type_name).empty() &&
+      dds::TypeSupport(find_type(type).make_data_type()).register_type(participant_) != ReturnCode_t::RETCODE_OK) {
     throw Error("Fast DDS could not register type " + type_name);
   }
   dds::Topic* topic = participant_->create_topic(name, type_name, dds::TOPIC_QOS_DEFAULT);

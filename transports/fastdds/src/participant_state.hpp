@@ -49,7 +49,7 @@ class ParticipantState {
   ParticipantState& operator=(const ParticipantState&) = delete;
 
   // The topic `name` of `type`, created on first use; Error if it exists with another type.
-  eprosima::fastdds::dds::Topic* topic(TopicType type, const std::string& name);
+  eprosima::fastdds::dds::Topic* topic(const TypeSupport& type, const std::string& name);
 
   eprosima::fastdds::dds::DomainParticipant& participant() { return *participant_; }
   eprosima::fastdds::dds::Publisher& publisher() { return *publisher_; }

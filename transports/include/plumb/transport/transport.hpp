@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "plumb/transport/messages.hpp"
+#include "plumb/topics/all.hpp"
 
 namespace plumb::transport {
 
@@ -20,17 +20,10 @@ struct Error : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class TopicType { SensorBatch, Attitude, CalibrationCoefficients, ComponentStatus, Truth };
-
-// The IDL scoped name of a topic type ("plumb::msg::Attitude"), identical on both vendors.
-const char* type_name(TopicType type);
-
-template <class T> struct TopicTraits;
-template <> struct TopicTraits<topics::SensorBatch> { static constexpr TopicType type = TopicType::SensorBatch; };
-template <> struct TopicTraits<topics::Attitude> { static constexpr TopicType type = TopicType::Attitude; };
-template <> struct TopicTraits<topics::CalibrationCoefficients> { static constexpr TopicType type = TopicType::CalibrationCoefficients; };
-template <> struct TopicTraits<topics::ComponentStatus> { static constexpr TopicType type = TopicType::ComponentStatus; };
-template <> struct TopicTraits<topics::Truth> { static constexpr TopicType type = TopicType::Truth; };
+// Names a topic type to a transport: generated from idl/ for every struct (plumb/topics/*.hpp);
+// topics::type_support<T>() gives the one of plumb::topics::T. Its type_name is the scoped IDL name
+// ("plumb::msg::Attitude"), identical on both vendors.
+using TypeSupport = topics::TypeSupport;
 
 enum class Reliability { BestEffort, Reliable };
 enum class Durability { Volatile, TransientLocal };
@@ -52,7 +45,7 @@ struct Qos {
   static Qos calibration() { return {Reliability::Reliable, Durability::TransientLocal, History::KeepLast, 1}; }
 };
 
-// The standard QoS of a well-known plumb topic name (falls back to reliable).
+// The QoS idl/ declares for a topic name (its `// @topic` line); reliable for other names.
 Qos default_qos_for_topic(const std::string& topic);
 
 struct ParticipantOptions {
@@ -66,9 +59,16 @@ struct ParticipantOptions {
 class RawWriter {
  public:
   virtual ~RawWriter() = default;
-  // `message` points to the topics:: type matching the writer's TopicType.
+  // `message` points to the topics:: type the writer was created with.
   virtual void write(const void* message) = 0;
   virtual std::size_t matched_readers() const = 0;
+};
+
+// Where a batched take puts its messages: slot(context, i) returns the i-th message to fill (the
+// reader's topics:: type). A function pointer and a context, not std::function: no allocation per call.
+struct TakeTarget {
+  void* context = nullptr;
+  void* (*slot)(void* context, std::size_t index) = nullptr;
 };
 
 class RawReader {
@@ -76,6 +76,10 @@ class RawReader {
   virtual ~RawReader() = default;
   // Takes the oldest unread message into `message` (the matching topics:: type); false when none.
   virtual bool take(void* message) = 0;
+  // Takes up to `max` unread messages, oldest first, in as few vendor calls as possible (one multi-
+  // sample take per call where the vendor allows it); message i goes to target.slot(target.context, i).
+  // Returns how many it filled.
+  virtual std::size_t take(std::size_t max, TakeTarget target) = 0;
   // Blocks until data may be available or the timeout passes; true if data arrived.
   virtual bool wait(std::chrono::nanoseconds timeout) = 0;
   virtual std::size_t matched_writers() const = 0;
@@ -93,8 +97,9 @@ class Participant {
   virtual ~Participant() = default;
   // `on_data` (optional) is called from a vendor thread when data may be available; it must be
   // quick and must not destroy the reader.
-  virtual std::unique_ptr<RawWriter> create_writer(TopicType type, const std::string& topic, const Qos& qos) = 0;
-  virtual std::unique_ptr<RawReader> create_reader(TopicType type, const std::string& topic, const Qos& qos,
+  // Error when the plugin was built from an idl/ without `type` or with another layout of it.
+  virtual std::unique_ptr<RawWriter> create_writer(const TypeSupport& type, const std::string& topic, const Qos& qos) = 0;
+  virtual std::unique_ptr<RawReader> create_reader(const TypeSupport& type, const std::string& topic, const Qos& qos,
                                                    std::function<void()> on_data = {}) = 0;
   // Topics seen through discovery so far (other participants' and our own).
   virtual std::vector<DiscoveredTopic> discovered_topics() = 0;
@@ -123,19 +128,36 @@ template <class T> class Reader {
  public:
   explicit Reader(std::unique_ptr<RawReader> raw) : raw_(std::move(raw)) {}
   bool take(T& message) { return raw_->take(&message); }
+  // Replaces the contents of `out` with up to `max` unread messages, oldest first; returns how many.
+  // Elements already in `out` are reused as messages arrive (their strings and sequences keep their
+  // capacity), so a reader that calls this in a loop with the same vector allocates little.
+  std::size_t take(std::vector<T>& out, std::size_t max) {
+    Slots slots{&out};
+    const std::size_t n = raw_->take(max, TakeTarget{&slots, &Slots::slot});
+    out.resize(n);
+    return n;
+  }
   bool wait(std::chrono::nanoseconds timeout) { return raw_->wait(timeout); }
   std::size_t matched_writers() const { return raw_->matched_writers(); }
 
  private:
+  struct Slots {
+    std::vector<T>* out;
+    static void* slot(void* context, std::size_t index) {
+      auto& out = *static_cast<Slots*>(context)->out;
+      if (index >= out.size()) out.resize(index + 1);
+      return &out[index];
+    }
+  };
   std::unique_ptr<RawReader> raw_;
 };
 
 template <class T> Writer<T> make_writer(Participant& p, const std::string& topic, const Qos& qos) {
-  return Writer<T>(p.create_writer(TopicTraits<T>::type, topic, qos));
+  return Writer<T>(p.create_writer(topics::type_support<T>(), topic, qos));
 }
 template <class T> Reader<T> make_reader(Participant& p, const std::string& topic, const Qos& qos,
                                          std::function<void()> on_data = {}) {
-  return Reader<T>(p.create_reader(TopicTraits<T>::type, topic, qos, std::move(on_data)));
+  return Reader<T>(p.create_reader(topics::type_support<T>(), topic, qos, std::move(on_data)));
 }
 
 }  // namespace plumb::transport

@@ -41,6 +41,8 @@ struct Counters {
   std::uint64_t calibrated_batches = 0;
   std::uint64_t calibrations_applied = 0;
   std::uint64_t calibrations_rejected = 0;
+  std::uint64_t calibrated_withheld = 0;  // samples not published calibrated: the |G| check failed
+  std::uint64_t calibration_stamp_s = 0;  // stamp_s of the coefficients applied (0: none)
 
   // (name, value) for every counter, in the order above: the status topic's counters.
   std::vector<std::pair<std::string, std::uint64_t>> named() const;

@@ -28,7 +28,7 @@ class DeviceSource final : public SampleSource {
   StreamParser parser_;
   std::function<void(SerialPort::Event, const std::string&)> on_event_;
   std::vector<std::uint8_t> buffer_;
-  bool open_failure_reported_ = false;
+  std::uint64_t open_failures_ = 0;  // consecutive failed opens since the device was last open
 };
 
 }  // namespace plumb::bridge

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "plumb/bridge/counters.hpp"
-#include "plumb/core/csv.hpp"
+#include "plumb/csv/files.hpp"
 #include "plumb/core/sample.hpp"
 
 namespace plumb::bridge {

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "plumb/core/calibration_model.hpp"
-#include "plumb/transport/messages.hpp"
+#include "plumb/topics/all.hpp"
 
 namespace plumb::components {
 

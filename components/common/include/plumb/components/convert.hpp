@@ -5,7 +5,7 @@
 
 #include "plumb/core/estimate.hpp"
 #include "plumb/core/sample.hpp"
-#include "plumb/transport/messages.hpp"
+#include "plumb/topics/all.hpp"
 
 namespace plumb::components {
 
@@ -14,7 +14,10 @@ Sample from_topic(const topics::SensorSample& s);
 
 // t_end / t_start (s) become window_end_ns / window_start_ns.
 topics::Attitude to_topic(const Estimate& e, const std::string& tool_id);
-Estimate from_topic(const topics::Attitude& a);
+// A navigator's estimate (Estimate::navigation) on plumb/navigation/<estimator>.
+topics::Navigation to_navigation(const Estimate& e, const std::string& tool_id);
+// The measured depth a sample carries (flags::kHasDepth), for plumb/depth.
+topics::MeasuredDepth to_depth(const Sample& s, const std::string& tool_id);
 
 topics::Truth to_topic(const TruthSample& t, const std::string& tool_id);
 

@@ -19,7 +19,8 @@ namespace plumb::compare {
 
 struct CompareConfig {
   std::vector<std::string> plugins{"static", "integral", "compensated"};
-  std::map<std::string, estimator::Parameters> plugin_parameters;  // by plugin name; `window` defaults to 0
+  // --param assignments, [PLUGIN.]KEY=VALUE (estimator/assignments.hpp); `window` is 0 (one record).
+  std::vector<std::string> assignments;
   // The grid. Every combination of these is one case.
   std::vector<double> inclinations_deg{0.5, 1, 2};
   std::vector<double> rpms{0, 60, 120};
@@ -66,6 +67,9 @@ struct PluginCaseResult {
   double rms_inclination_error_deg = 0;
   double max_inclination_error_deg = 0;
   double mean_azimuth_sd_deg = 0;         // the plugin's own reported standard deviation, RMS
+  // Coverage (issue 14): RMS of error / reported sd over the valid records with a reported sd;
+  // 1 when the sd is honest, above 1 when it is too small. 0 when the plugin reports no sd.
+  double azimuth_coverage = 0, inclination_coverage = 0;
   // Azimuth-dependent bias: least-squares fit of the mean azimuth error to a + b sinA + c cosA.
   double bias_sin_deg = 0, bias_cos_deg = 0, bias_mean_deg = 0;
   int valid = 0;                          // records with a valid azimuth

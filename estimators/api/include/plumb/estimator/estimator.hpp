@@ -4,7 +4,9 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -31,8 +33,7 @@ struct Info {
   std::string description;
   std::string version;
   std::vector<ParameterSpec> parameters;
-  bool uses_gyro = false;        // needs wx, wy, wz
-  bool stateful = false;         // carries state across windows (navigation)
+  bool uses_gyro = false;        // needs wx, wy, wz: the runner says so when the stream has none
 };
 
 using Parameters = std::map<std::string, std::string>;
@@ -55,18 +56,22 @@ class Estimator {
   virtual Counters counters() const = 0;
 };
 
+// An estimator that a plugin created: destroyed by the plugin's own destroy function.
+using EstimatorPtr = std::unique_ptr<Estimator, std::function<void(Estimator*)>>;
+
 }  // namespace plumb::estimator
 
 // --- plugin ABI -----------------------------------------------------------------------------
-// A plugin is libplumb_estimator_<name>.so exporting
-//   extern "C" const plumb_estimator_plugin_v1* plumb_estimator_plugin();
-// The host refuses a plugin whose abi_version differs from PLUMB_ESTIMATOR_ABI_VERSION.
-#define PLUMB_ESTIMATOR_ABI_VERSION 1u
+// A plugin is libplumb_estimator_<name>.so (the file name is its one name; info().name must
+// equal it) exporting
+//   extern "C" const plumb_estimator_plugin* plumb_estimator_plugin();
+// PLUMB_ESTIMATOR_ABI is a hash of this header and the types it passes (core/sample.hpp,
+// core/estimate.hpp): a plugin built against other versions of them is refused at load time.
+#include "plumb/estimator/abi.hpp"
 
 extern "C" {
-struct plumb_estimator_plugin_v1 {
-  unsigned abi_version;
-  const char* name;
+struct plumb_estimator_plugin {
+  const char* abi;  // first member, read by the plugin facility (plumb/plugin/library.hpp)
   const char* description;
   plumb::estimator::Estimator* (*create)();
   void (*destroy)(plumb::estimator::Estimator*);
@@ -74,11 +79,10 @@ struct plumb_estimator_plugin_v1 {
 }
 
 // Defines the entry point of a plugin whose estimator class is default-constructible.
-#define PLUMB_ESTIMATOR_PLUGIN(CLASS, NAME, DESCRIPTION)                                              \
-  extern "C" __attribute__((visibility("default"))) const plumb_estimator_plugin_v1* plumb_estimator_plugin() { \
-    static const plumb_estimator_plugin_v1 plugin{                                                    \
-        PLUMB_ESTIMATOR_ABI_VERSION, NAME, DESCRIPTION,                                               \
-        []() -> plumb::estimator::Estimator* { return new CLASS(); },                                 \
+#define PLUMB_ESTIMATOR_PLUGIN(CLASS, DESCRIPTION)                                                    \
+  extern "C" __attribute__((visibility("default"))) const struct plumb_estimator_plugin* plumb_estimator_plugin() { \
+    static const struct ::plumb_estimator_plugin plugin{                                                     \
+        PLUMB_ESTIMATOR_ABI, DESCRIPTION, []() -> plumb::estimator::Estimator* { return new CLASS(); }, \
         [](plumb::estimator::Estimator* e) { delete e; }};                                            \
     return &plugin;                                                                                   \
   }

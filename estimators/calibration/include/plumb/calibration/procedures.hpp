@@ -30,6 +30,9 @@ struct CommonOptions {
   // After calibration, a station further than this from its nominal orientation gives a warning
   // (turntable tilt and fixture errors stay below it).
   double warn_direction_error_deg = 0.5;
+  // A procedure never yields coefficients whose own predicted (3-sigma) inclination error over all
+  // orientations and the calibrated temperature range exceeds this (plumb-calibrate --max-error-deg).
+  double max_error_deg = 0.005;
 };
 
 // METHODS.md 3: six stations, each axis at +g and -g with the others horizontal.
@@ -41,6 +44,9 @@ struct TwentyFourOptions : CommonOptions {
   double reference_temp_c = 25;      // T0 of the temperature terms
   double max_run_temp_spread_c = 3;  // a station this far from its run's temperature: warning
   double nonlinear_above_c = 175;    // the thermometer gets a cubic when the runs go above this
+  // Order of the polynomial in temperature of each sensor's bias and scale drift (1..3); 0 chooses
+  // it from the residuals (docs/calibration.md 4.3).
+  int temperature_order = 0;
 };
 
 // METHODS.md 2: per temperature run, 24 stations (each axis up and down, four rotations about the

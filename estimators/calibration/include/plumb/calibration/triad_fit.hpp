@@ -45,7 +45,10 @@ std::vector<std::string> method_parameter_names();
 
 // The robust orientation check: from the raw averages alone (medians, so that one misplaced station
 // cannot hide), each station's reading direction against its nominal one. Throws CalibrationError
-// naming the station when one is further than max_angle_deg from where it should be.
+// naming the station when one is further than max_angle_deg from where it should be. With too few
+// stations to estimate each axis's offset and scale (each axis needs one station with it vertical
+// and two with it horizontal: the live procedure checks every station as it comes), the raw
+// reading's direction is judged as it is.
 void check_orientations(const std::vector<const StationAverage*>& stations, double max_angle_deg);
 
 // Inclination (deg) of a specific force f (G = -f).

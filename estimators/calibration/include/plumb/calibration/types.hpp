@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <utility>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -60,7 +61,7 @@ struct SettleOptions {
   double k_sigma = 4.0;
   double min_tolerance_accel = 0;   // raw units
   double min_tolerance_mag = 0;
-  bool check_mag = false;           // magnetometer procedures also wait for the field to settle
+  bool check_mag = false;           // kept for callers; the magnetometers are now always checked (stillness)
 };
 
 struct StationAverage {
@@ -75,6 +76,7 @@ struct StationAverage {
   std::size_t samples_used = 0;
   std::size_t samples_rejected = 0;   // flagged unusable
   double settled_after_s = 0;         // from the station's start
+  std::vector<std::string> notes;     // motion seen and left out (the report's warnings)
 };
 
 // Averages every station of `samples` (sorted by time). Throws CalibrationError naming the station
@@ -100,8 +102,37 @@ struct StationResidual {
   double inclination_after_deg = -1;
 };
 
+// What the calibration's own statistics predict for its error in use, from the fit's covariance
+// (scaled up by chi2/dof when the fit's residuals exceed its noise): the largest 3-sigma
+// inclination and azimuth error over a grid of orientations and the calibrated temperature range,
+// with the parameters that contribute most at the worst point.
+struct ErrorPrediction {
+  bool valid = false;
+  double inclination_deg = 0;        // worst 3-sigma inclination error
+  double inclination_at_deg = 0;     // where: inclination, toolface, temperature
+  double toolface_at_deg = 0;
+  double temperature_at_c = 0;
+  double azimuth_deg = 0;            // worst 3-sigma azimuth error (inclinations 10..120 deg)
+  double azimuth_at_inclination_deg = 0;
+  std::vector<std::pair<std::string, double>> contributions;   // parameter group, its 3-sigma share (deg), largest first
+  std::string grid;                  // the orientations and temperatures it covers
+};
+
+// What the stations' residuals after calibration are made of: the part the four turntable
+// rotations of a face share (what the sensor model leaves) and the part that turns with the
+// turntable (table top tilt, misplaced stations), which the rotation averaging cancels.
+struct ResidualSplit {
+  bool valid = false;
+  double sensor_deg = 0;        // largest face-mean direction error
+  double orientation_deg = 0;   // largest station deviation from its face mean
+  std::string worst_station;    // the station with the largest orientation part
+};
+
 struct Result {
   CalibrationModel model;
+  ErrorPrediction predicted;
+  ResidualSplit split;
+  std::vector<std::string> dropped;   // stations the robust fit left out, with why
   std::vector<Parameter> parameters;
   std::vector<StationResidual> residuals;
   std::vector<std::string> warnings;

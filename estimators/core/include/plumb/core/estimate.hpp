@@ -2,10 +2,23 @@
 // plumb::topics::Attitude and the Attitude CSV of CONVENTIONS.md.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace plumb {
+
+// What a navigator (strapdown) adds to an attitude estimate: CONVENTIONS.md "Navigation".
+struct NavigationState {
+  std::array<double, 3> position_m{};       // north, east, down from the collar
+  std::array<double, 3> velocity_mps{};     // vn, ve, vd
+  std::array<double, 3> position_sd_m{};    // filter standard deviations (0 when unknown)
+  std::array<double, 3> velocity_sd_mps{};
+  bool still = false;                       // a zero-velocity update is in progress
+  std::uint32_t zero_velocity_updates = 0;  // still periods used so far
+  std::string azimuth_reference = "magnetic";  // "magnetic", "true" or "relative" (to an initial azimuth)
+};
 
 struct Estimate {
   std::string estimator;            // plugin name
@@ -29,6 +42,7 @@ struct Estimate {
   bool rotating = false;
   bool partial_window = false;
   std::string reason;               // why not valid (or a warning); empty when all is well
+  std::optional<NavigationState> navigation;  // navigators only
 
   // Every numeric output finite; estimators guarantee this (tests check it).
   bool all_finite() const;

@@ -21,6 +21,10 @@ inline constexpr std::uint32_t kHasGyro = 128;
 inline constexpr std::uint32_t kHasTemperature = 256;
 inline constexpr std::uint32_t kCalibrated = 512;
 inline constexpr std::uint32_t kTemperatureOutOfRange = 1024;
+// Not on the wire (depth travels on its own topic): the sample carries a measured depth.
+inline constexpr std::uint32_t kHasDepth = 2048;
+// The sample has no magnetometer reading (a gyro tool, a logger without one): b is meaningless.
+inline constexpr std::uint32_t kNoMagnetometer = 4096;
 // Samples carrying any of these must not be used for attitude.
 inline constexpr std::uint32_t kUnusable = kAccelSaturated | kMagSaturated | kOutOfRange | kNotFinite | kTimeBackwards;
 }  // namespace flags
@@ -32,6 +36,7 @@ struct Sample {
   Eigen::Vector3d b = Eigen::Vector3d::Zero();   // magnetic field, microtesla
   Eigen::Vector3d w = Eigen::Vector3d::Zero();   // angular rate, rad/s
   double temp_c = 0;                             // degC
+  double depth_m = 0;                            // measured depth along the hole (flags::kHasDepth)
   std::uint32_t flags = 0;
 };
 
@@ -42,6 +47,11 @@ struct TruthSample {
   double azimuth_deg = 0;
   double toolface_deg = 0;
   double rpm = 0;
+  // Drilling runs: position from the collar (NED, m), velocity (m/s) and measured depth (m).
+  bool has_position = false;
+  double north_m = 0, east_m = 0, down_m = 0;
+  double vn_mps = 0, ve_mps = 0, vd_mps = 0;
+  double depth_m = 0;
 };
 
 }  // namespace plumb

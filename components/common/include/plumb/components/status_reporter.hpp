@@ -1,0 +1,40 @@
+// Every component's health on plumb/status: one reporter, so that all components say it alike
+// (component, host, state, counters, last error) at the same period.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "plumb/transport/topic_names.hpp"
+#include "plumb/transport/transport.hpp"
+
+namespace plumb::components {
+
+using CounterList = std::vector<std::pair<std::string, std::uint64_t>>;
+
+std::string host_name();
+
+// One status message; counters beyond the IDL bound are dropped (the first ones are kept).
+topics::ComponentStatus make_status(const std::string& component, const std::string& state, const CounterList& counters,
+                                    const std::string& last_error);
+
+class StatusReporter {
+ public:
+  StatusReporter(transport::Participant& participant, std::string component, double period_s = 1.0,
+                 const std::string& topic = transport::topic_names::kStatus);
+  // Publishes now.
+  void publish(const std::string& state, const CounterList& counters, const std::string& last_error = "");
+  // True once per period: the caller then gathers its counters and publishes.
+  bool due();
+
+ private:
+  transport::Writer<topics::ComponentStatus> writer_;
+  std::string component_;
+  std::chrono::steady_clock::duration period_;
+  std::chrono::steady_clock::time_point next_;
+};
+
+}  // namespace plumb::components

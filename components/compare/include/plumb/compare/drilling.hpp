@@ -1,0 +1,66 @@
+// `plumb compare --scenario drilling`: drilling runs from the simulator (sim/drilling.hpp) through
+// a navigator plugin (strapdown), errors against the exact truth over the whole run, beside the
+// figures the source reports for its gyro inclinometer (METHODS.md section 4).
+#pragma once
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace plumb::compare {
+
+// The source's result over 15 minutes: attitude within 2 deg, north/east velocity within 2 m/s,
+// down within 4 m/s.
+inline constexpr double kSourceAttitudeDeg = 2.0;
+inline constexpr double kSourceHorizontalVelocityMps = 2.0;
+inline constexpr double kSourceDownVelocityMps = 4.0;
+
+struct DrillingCompareConfig {
+  std::string plugin = "strapdown";
+  std::vector<std::string> grades{"tactical", "mems"};
+  std::vector<double> rates_hz{100, 10};
+  std::vector<bool> with_depth{true, false};
+  bool magnetometer = true;
+  int seeds = 1;
+  std::uint64_t base_seed = 1;
+  std::vector<std::string> assignments;  // --param [PLUGIN.]KEY=VALUE
+};
+
+// One error sample over time (estimate minus truth at the estimate's time).
+struct ErrorPoint {
+  double t = 0;
+  double inclination_deg = 0, azimuth_deg = 0, toolface_deg = 0;
+  double north_m = 0, east_m = 0, down_m = 0;
+};
+
+struct DrillingRunResult {
+  std::string grade;
+  double rate_hz = 0;
+  bool with_depth = true;
+  std::uint64_t seed = 0;
+  double drilled_m = 0;
+  double max_attitude_deg = 0;          // largest of the inclination, azimuth, toolface errors
+  double max_inclination_deg = 0, max_azimuth_deg = 0, max_toolface_deg = 0;
+  double rms_inclination_deg = 0, rms_azimuth_deg = 0, rms_toolface_deg = 0;
+  double end_position_m = 0;            // 3-D, at the last estimate
+  double max_horizontal_velocity_mps = 0, max_down_velocity_mps = 0;
+  double attitude_coverage = 0;         // RMS(error / reported sd) over I, A, T
+  // The same per angle (issue 14: the navigator filter's sigmas beside the windowed plugins').
+  double inclination_coverage = 0, azimuth_coverage = 0, toolface_coverage = 0;
+  double position_coverage = 0;         // RMS(error / reported sd) over N, E, D
+  int estimates = 0, valid = 0;
+  std::string first_invalid_reason;
+  std::vector<ErrorPoint> errors;
+
+  double end_position_percent() const { return drilled_m > 0 ? 100 * end_position_m / drilled_m : 0; }
+};
+
+// Throws plugin::Error / estimator::ParameterError before any run for a bad plugin or parameter.
+std::vector<DrillingRunResult> run_drilling_compare(const DrillingCompareConfig& config);
+
+void write_drilling_report(std::ostream& out, const std::vector<DrillingRunResult>& runs);
+// Errors over time, six panels (inclination, azimuth, toolface, north, east, down), one curve per run.
+void write_drilling_plot(std::ostream& out, const std::vector<DrillingRunResult>& runs);
+
+}  // namespace plumb::compare

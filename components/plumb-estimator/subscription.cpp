@@ -1,0 +1,96 @@
+#include "subscription.hpp"
+
+#include <iostream>
+
+#include "plumb/components/convert.hpp"
+
+namespace plumb::components {
+
+SensorSubscription::SensorSubscription(transport::Participant& participant, const SubscriptionOptions& options)
+    : reader_(transport::make_reader<topics::SensorBatch>(
+          participant, options.topic,
+          options.reliable ? transport::Qos::reliable_stream() : transport::Qos::sensor_stream())),
+      depth_reader_(transport::make_reader<topics::MeasuredDepth>(
+          participant, transport::topic_names::kDepth, transport::default_qos_for_topic(transport::topic_names::kDepth))),
+      options_(options),
+      streams_(options.tool_id),
+      expect_calibrated_(options.topic == transport::topic_names::kSensorCalibrated) {}
+
+// The latest depth of each tool; it holds for the samples taken after it (a rig reports about
+// once a second, the sensors far faster).
+void SensorSubscription::take_depth() {
+  while (depth_reader_.take(depth_msg_)) {
+    if ((depth_msg_.flags & topics::DEPTH_VALID) == 0) continue;
+    if (!options_.tool_id.empty() && !depth_msg_.tool_id.empty() && depth_msg_.tool_id != options_.tool_id) continue;
+    depth_m_[depth_msg_.tool_id] = depth_msg_.depth_m;
+    ++depth_messages_;
+  }
+}
+
+bool SensorSubscription::route(const topics::SensorBatch& batch, ToolChunks& out) {
+  SequenceAccount* account = streams_.route(batch.tool_id);
+  if (!account) {
+    if (!warned_other_tool_) {
+      std::cerr << "plumb-estimator: " << options_.topic << " also carries tool '" << batch.tool_id
+                << "'; using only tool '" << options_.tool_id << "' (--tool-id), the others are counted" << std::endl;
+      warned_other_tool_ = true;
+    }
+    return false;
+  }
+  if (streams_.streams().size() > 1 && !warned_other_tool_) {
+    // Two tools on one topic: never one estimate from both; each gets its own.
+    std::cerr << "plumb-estimator: " << options_.topic << " carries more than one tool (now also '" << batch.tool_id
+              << "'): estimating each tool separately, attitude messages carry its tool id" << std::endl;
+    warned_other_tool_ = true;
+  }
+  auto depth = depth_m_.find(batch.tool_id);
+  if (depth == depth_m_.end()) depth = depth_m_.find("");
+  auto& chunk = out[batch.tool_id];
+  for (const auto& m : batch.samples) {
+    account->account(m.seq);
+    chunk.push_back(from_topic(m));
+    if (depth != depth_m_.end()) {
+      chunk.back().depth_m = depth->second;
+      chunk.back().flags |= flags::kHasDepth;
+    }
+    if (expect_calibrated_ && (chunk.back().flags & flags::kCalibrated) == 0) ++uncalibrated_samples_;
+  }
+  samples_ += batch.samples.size();
+  return true;
+}
+
+bool SensorSubscription::take(ToolChunks& out) {
+  bool any = false;
+  take_depth();
+  // Batched takes: one vendor call for everything that arrived since the last one (up to
+  // kBatchesPerTake), not one call per message.
+  constexpr std::size_t kBatchesPerTake = 64;
+  while (reader_.take(taken_, kBatchesPerTake) > 0) {
+    for (const auto& batch : taken_) {
+      ++batches_;
+      if (route(batch, out)) any = true;
+    }
+    if (taken_.size() < kBatchesPerTake) break;  // the reader is empty
+  }
+  if (uncalibrated_samples_ > 0 && !warned_uncalibrated_) {
+    std::cerr << "plumb-estimator: samples on " << options_.topic
+              << " are not calibrated (no calibration applied by the bridge); counted as uncalibrated_samples"
+              << std::endl;
+    warned_uncalibrated_ = true;
+  }
+  return any;
+}
+
+CounterList SensorSubscription::counters() const {
+  return {{"batches", batches_},
+          {"samples", samples_},
+          {"tools", streams_.streams().size()},
+          {"seq_gaps", streams_.gaps()},
+          {"lost_samples", streams_.lost()},
+          {"seq_backwards", streams_.backwards()},
+          {"other_tool_batches", streams_.other_tool_batches()},
+          {"depth_messages", depth_messages_},
+          {"uncalibrated_samples", uncalibrated_samples_}};
+}
+
+}  // namespace plumb::components

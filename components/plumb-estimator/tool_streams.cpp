@@ -1,0 +1,48 @@
+#include "tool_streams.hpp"
+
+namespace plumb::components {
+
+void SequenceAccount::account(std::uint64_t seq) {
+  if (have_seq && seq != next_seq) {
+    if (seq > next_seq) {
+      ++gaps;
+      lost += seq - next_seq;
+    } else {
+      ++backwards;
+    }
+  }
+  have_seq = true;
+  next_seq = seq + 1;
+}
+
+SequenceAccount* ToolStreams::route(const std::string& tool_id) {
+  if (!selected_.empty() && tool_id != selected_) {
+    ++other_tool_batches_;
+    return nullptr;
+  }
+  return &streams_[tool_id];
+}
+
+void ToolStreams::restart_all() {
+  for (auto& [tool, account] : streams_) account.restart();
+}
+
+std::uint64_t ToolStreams::gaps() const {
+  std::uint64_t n = 0;
+  for (const auto& [tool, a] : streams_) n += a.gaps;
+  return n;
+}
+
+std::uint64_t ToolStreams::lost() const {
+  std::uint64_t n = 0;
+  for (const auto& [tool, a] : streams_) n += a.lost;
+  return n;
+}
+
+std::uint64_t ToolStreams::backwards() const {
+  std::uint64_t n = 0;
+  for (const auto& [tool, a] : streams_) n += a.backwards;
+  return n;
+}
+
+}  // namespace plumb::components

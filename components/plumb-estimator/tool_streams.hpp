@@ -1,0 +1,44 @@
+// Several tools on one sensor topic: each tool id is its own stream, with its own sequence
+// accounting, so that one tool's sequence numbers never count as the other's losses and no
+// estimate ever mixes two tools. With a selected tool id, only that tool is a stream and the
+// batches of every other tool are counted. Pure logic (no DDS), tested directly.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+
+namespace plumb::components {
+
+// The sequence numbers of one tool's samples: gaps (and the samples they lost) and steps back.
+struct SequenceAccount {
+  bool have_seq = false;
+  std::uint64_t next_seq = 0;
+  std::uint64_t gaps = 0, lost = 0, backwards = 0;
+  void account(std::uint64_t seq);
+  // After a pause: the next sequence number is not expected to follow the last one.
+  void restart() { have_seq = false; }
+};
+
+class ToolStreams {
+ public:
+  // selected: "" for one stream per tool id seen; otherwise only that tool.
+  explicit ToolStreams(std::string selected = {}) : selected_(std::move(selected)) {}
+  // The account of the stream `tool_id` belongs to, created on first sight; nullptr when another
+  // tool than the selected one (counted in other_tool_batches).
+  SequenceAccount* route(const std::string& tool_id);
+  void restart_all();
+  const std::map<std::string, SequenceAccount>& streams() const { return streams_; }
+  std::uint64_t other_tool_batches() const { return other_tool_batches_; }
+  // Totals over the tools.
+  std::uint64_t gaps() const;
+  std::uint64_t lost() const;
+  std::uint64_t backwards() const;
+
+ private:
+  std::string selected_;
+  std::map<std::string, SequenceAccount> streams_;
+  std::uint64_t other_tool_batches_ = 0;
+};
+
+}  // namespace plumb::components

@@ -1,0 +1,95 @@
+#include "topic_wait.hpp"
+
+#include <algorithm>
+#include <iostream>
+#include <set>
+
+#include "plumb/estimator/loader.hpp"
+#include "plumb/transport/topic_names.hpp"
+
+namespace plumb::cli {
+
+namespace {
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+std::set<std::string> known_topic_names(transport::Participant& participant) {
+  std::set<std::string> names;
+  for (const auto& e : topics::kTopicTable)
+    if (!e.prefix) names.insert(e.name);
+  for (const auto& p : estimator::list_plugins()) {  // by file name: nothing is opened
+    names.insert(transport::topic_names::attitude(p.name));
+    names.insert(transport::topic_names::navigation(p.name));
+  }
+  // Only topics someone writes: our own reader makes the mistyped name "discovered" too.
+  for (const auto& d : participant.discovered_topics())
+    if (d.writers > 0) names.insert(d.name);
+  return names;
+}
+
+}  // namespace
+
+std::vector<std::string> closest_topic_names(transport::Participant& participant, const std::string& topic) {
+  const auto names = known_topic_names(participant);
+  if (names.count(topic)) return {};
+  // A typo is a few characters; a third of the name would be another name altogether.
+  const std::size_t limit = std::max<std::size_t>(2, std::min<std::size_t>(4, topic.size() / 3));
+  std::vector<std::pair<std::size_t, std::string>> scored;
+  for (const auto& n : names) {
+    const std::size_t d = edit_distance(topic, n);
+    if (d <= limit) scored.emplace_back(d, n);
+  }
+  std::sort(scored.begin(), scored.end());
+  std::vector<std::string> out;
+  for (const auto& [d, n] : scored) {
+    if (out.size() == 3 || d > scored.front().first) break;
+    out.push_back(n);
+  }
+  return out;
+}
+
+std::string did_you_mean(const std::vector<std::string>& names) {
+  if (names.empty()) return "";
+  std::string text = "did you mean ";
+  for (std::size_t i = 0; i < names.size(); ++i) text += (i == 0 ? "" : (i + 1 == names.size() ? " or " : ", ")) + names[i];
+  return text + "?";
+}
+
+SilenceNotes::SilenceNotes(std::string program, std::string topic) : program_(std::move(program)), topic_(std::move(topic)) {}
+
+void SilenceNotes::received() {
+  since_ = Clock::now();
+  next_note_s_ = 3;
+}
+
+void SilenceNotes::check(transport::Participant& participant, std::size_t matched_writers) {
+  const double silent_s = std::chrono::duration<double>(Clock::now() - since_).count();
+  if (silent_s < next_note_s_) return;
+  next_note_s_ *= 2;
+  std::string line = program_ + ": nothing on " + topic_ + " for " + std::to_string(static_cast<int>(silent_s)) +
+                     " s (" + std::to_string(matched_writers) + " writer(s) matched); ";
+  std::string with_writers;
+  for (const auto& t : participant.discovered_topics())
+    if (t.writers > 0 && t.name != topic_) with_writers += (with_writers.empty() ? "" : ", ") + t.name;
+  line += with_writers.empty() ? "no topic has a writer on this domain" : "topics with writers: " + with_writers;
+  if (matched_writers == 0) {
+    const std::string hint = did_you_mean(closest_topic_names(participant, topic_));
+    if (!hint.empty()) line += "; " + hint;
+  }
+  std::cerr << line << std::endl;
+}
+
+}  // namespace plumb::cli

@@ -1,0 +1,38 @@
+// What `plumb topic echo|hz` say while nothing arrives, and the names they suggest for a typo:
+// a program that waits says what it waits for and what it does see, instead of waiting in silence.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "plumb/transport/transport.hpp"
+
+namespace plumb::cli {
+
+// Up to three known topic names closest to `topic` (edit distance): the exact names of idl/, the
+// attitude and navigation topics of the installed estimator plugins, and the topics discovered.
+// Empty when nothing is close or `topic` itself is known.
+std::vector<std::string> closest_topic_names(transport::Participant& participant, const std::string& topic);
+
+// "did you mean a or b?" or "" for no suggestion.
+std::string did_you_mean(const std::vector<std::string>& names);
+
+// Notes on stderr after 3, 6, 12, 24... s without a message on the topic (growing, so a long wait is
+// said, not shouted): matched writers, the topics that do have writers, and close names.
+class SilenceNotes {
+ public:
+  SilenceNotes(std::string program, std::string topic);
+  void received();  // a message came: the next note waits for a new silence
+  void check(transport::Participant& participant, std::size_t matched_writers);
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  std::string program_;
+  std::string topic_;
+  Clock::time_point since_ = Clock::now();
+  double next_note_s_ = 3;
+};
+
+}  // namespace plumb::cli

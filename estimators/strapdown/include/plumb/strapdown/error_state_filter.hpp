@@ -1,0 +1,85 @@
+// The error-state Kalman filter of the navigator (closed loop: every estimated error is fed back
+// into the whole-value state and the error state restarts at zero).
+//
+// Errors are "estimate minus truth":
+//   phi (0-2):  attitude error in the navigation frame, C_b^n(est) = (I + [phi x]) C_b^n(true)
+//   dv  (3-5):  velocity error, NED, m/s        dp (6-8): position error, NED, m
+//   dbg (9-11): gyro bias error, tool frame, rad/s
+//   dba (12-14): accelerometer bias error, tool frame, m/s^2
+//   ds  (15):   error of the along-hole distance integrated from the velocity (the quantity a
+//               measured depth observes; no function of the other 15 states gives a path length)
+// Continuous dynamics (flat earth, earth.hpp), C = C_b^n, f_n = C f:
+//   phi' = -w_ie x phi - C dbg + C n_g          dv' = -f_n x phi - 2 w_ie x dv - C dba + C n_a
+//   dp'  = dv        dbg' = n_bg        dba' = n_ba (random walks)
+//   ds'  = (axis x v) . phi + axis . dv        (axis = C e_z, the tool axis in NED)
+// Measurements are residuals r = h(estimate) - z = H dx + noise.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+
+#include "plumb/strapdown/mechanization.hpp"
+
+namespace plumb::strapdown {
+
+inline constexpr int kStates = 16;
+using StateVector = Eigen::Matrix<double, kStates, 1>;
+using StateMatrix = Eigen::Matrix<double, kStates, kStates>;
+
+namespace index {
+inline constexpr int kAtt = 0, kVel = 3, kPos = 6, kGyroBias = 9, kAccelBias = 12, kDistance = 15;
+}
+
+// Noise densities in SI units.
+struct ProcessNoise {
+  double gyro_arw = 0;         // rad/sqrt(s)
+  double accel_vrw = 0;        // m/s/sqrt(s)
+  double gyro_bias_walk = 0;   // rad/s/sqrt(s)
+  double accel_bias_walk = 0;  // m/s^2/sqrt(s)
+};
+
+class ErrorStateFilter {
+ public:
+  void reset(const StateMatrix& p0) { p_ = p0; }
+  const StateMatrix& covariance() const { return p_; }
+  StateMatrix& covariance() { return p_; }
+
+  // Transition matrix over an epoch from the integrals the mechanization gathered (means over the
+  // epoch stand in for the time-varying F), to second order in F dt.
+  // gravity_coupling: when g was learnt from the alignment's |f| it is wrong by u' dba (u: the down
+  // direction in the tool frame at alignment), an error the accelerometer-bias states carry.
+  static StateMatrix transition(const StepIntegrals& integrals, const Eigen::Vector3d& w_ie,
+                                const Eigen::Vector3d& gravity_coupling = Eigen::Vector3d::Zero());
+  // Discrete process noise for that transition (trapezoidal in time).
+  static StateMatrix process_noise(const StateMatrix& phi, double dt, const ProcessNoise& noise);
+  void predict(const StateMatrix& phi, const StateMatrix& q);
+
+  // One measurement: Joseph-form update, P kept symmetric. Returns the error estimate (to feed
+  // back); `nis` (if given) receives the normalised innovation squared r' S^-1 r.
+  template <int M>
+  StateVector update(const Eigen::Matrix<double, M, 1>& r, const Eigen::Matrix<double, M, kStates>& h,
+                     const Eigen::Matrix<double, M, M>& noise, double* nis = nullptr) {
+    const Eigen::Matrix<double, kStates, M> pht = p_ * h.transpose();
+    const Eigen::Matrix<double, M, M> s = h * pht + noise;
+    // M <= 3: the closed-form inverse of a small symmetric positive definite matrix.
+    const Eigen::Matrix<double, M, M> s_inv = s.inverse();
+    const Eigen::Matrix<double, kStates, M> k = pht * s_inv;
+    if (nis != nullptr) *nis = r.dot(s_inv * r);
+    const StateMatrix ikh = StateMatrix::Identity() - k * h;
+    p_ = ikh * p_ * ikh.transpose() + k * noise * k.transpose();
+    symmetrize();
+    return k * r;
+  }
+
+  // After feeding dx back into the whole-value state the error state is zero again; its
+  // covariance is unchanged to first order (the attitude reset Jacobian is I - [dphi x]/2 ~ I).
+  void symmetrize() { p_ = 0.5 * (p_ + p_.transpose()).eval(); }
+
+ private:
+  StateMatrix p_ = StateMatrix::Identity();
+};
+
+// Applies an error estimate to the whole-value state (and the bias estimates).
+void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bias, Eigen::Vector3d& accel_bias);
+
+}  // namespace plumb::strapdown

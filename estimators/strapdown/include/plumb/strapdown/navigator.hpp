@@ -1,0 +1,188 @@
+// The strapdown navigator: input checks, alignment, mechanization, stillness, the error-state
+// filter and its measurements, output rows and the optional backward smoother. Plain C++ (no
+// plugin API): the plugin (strapdown_estimator.cpp) and the tests drive it through push/flush.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "plumb/core/estimate.hpp"
+#include "plumb/core/sample.hpp"
+#include "plumb/strapdown/alignment.hpp"
+#include "plumb/strapdown/error_state_filter.hpp"
+#include "plumb/strapdown/mechanization.hpp"
+#include "plumb/strapdown/smoother.hpp"
+#include "plumb/strapdown/stillness.hpp"
+
+namespace plumb::strapdown {
+
+enum class DetectorChoice { Auto, Magnitude, Glrt };
+
+// Every setting in SI units (radians, seconds, m/s^2, rad/s); parameters.hpp maps the plugin's
+// named parameters onto it.
+struct NavigatorConfig {
+  double latitude = 45.0 * 3.14159265358979323846 / 180.0;
+  std::optional<double> gravity;       // m/s^2; learnt from the first still period when absent
+  std::optional<double> field_uT;      // reference |B|
+  std::optional<double> dip;           // reference dip
+  double output_rate_hz = 1;
+  bool use_magnetometer = true;
+  std::optional<double> initial_azimuth;     // tool azimuth at alignment (no magnetometer)
+  double initial_azimuth_sd = 0;
+  bool gyrocompass = false;
+  std::optional<double> declination;         // true = magnetic + declination
+  // Stillness.
+  DetectorChoice detector = DetectorChoice::Auto;
+  double still_window_s = 0.05;
+  double min_still_s = 0.5;
+  double still_hysteresis = 1.5;
+  double still_accel_tol = 0.05;       // m/s^2
+  double still_field_tol_uT = 5;
+  double still_gyro_tol = 5.0 * 3.14159265358979323846 / 180.0 / 3600.0;  // rad/s
+  double glrt_threshold = 15;
+  double still_accel_drift_tol = 0.002;  // m/s^2
+  double still_depth_tol_m = 0.01;
+  double align_s = 30;                 // longest stretch of the first still period used to align
+  // Azimuth gating (issue 18).
+  double field_tol_uT = 0.5;
+  double dip_tol = 0.3 * 3.14159265358979323846 / 180.0;
+  double mag_heading_sd = 0.05 * 3.14159265358979323846 / 180.0;  // model error per still period
+  double mag_update_s = 5;             // field averaged this long (or the whole period) per update
+  // Sensor model (per axis).
+  double gyro_arw = 0.05 * 3.14159265358979323846 / 180.0 / 60.0;   // rad/sqrt(s)
+  double accel_vrw = 0.03 / 60.0;                                   // m/s/sqrt(s)
+  double gyro_bias_sd = 1.0 * 3.14159265358979323846 / 180.0 / 3600.0;  // rad/s, turn-on
+  double accel_bias_sd = 0.3e-3 * 9.80665;                          // m/s^2
+  double gyro_bias_instability = 0.0;  // rad/s reached over bias_time_s (random walk)
+  double accel_bias_instability = 0.0;
+  double bias_time_s = 3600;
+  // Measurements.
+  double kf_rate_hz = 20;
+  double zupt_sd = 1e-3;               // m/s
+  double zaru_interval_s = 1;          // gyro means per zero-rate update
+  bool tilt_update = false;            // separate accelerometer tilt update at stops
+  double nhc_sd = 0.01;                // m/s
+  double depth_sd = 0.01;              // m
+  double depth_interval_s = 1;
+  // Output and offline.
+  bool smooth = false;
+  double max_gap_s = 1.0;
+  double gyro_time_offset_s = 0;       // gyro stamps lag the true gyro time by this (s)
+};
+
+class Navigator {
+ public:
+  explicit Navigator(const NavigatorConfig& config = {});
+  void configure(const NavigatorConfig& config);
+  // Samples oldest first; appends the rows they complete (none in smoothing mode).
+  void push(const Sample& s, std::vector<Estimate>& out);
+  // End of stream: the rows still pending (all of them, smoothed, in smoothing mode).
+  void flush(std::vector<Estimate>& out);
+  const std::map<std::string, std::uint64_t>& counters() const { return counters_; }
+
+  // Introspection for tests.
+  bool aligned() const { return aligned_; }
+  const NavState& state() const { return x_; }
+  const Eigen::Vector3d& gyro_bias() const { return bg_; }
+  const Eigen::Vector3d& accel_bias() const { return ba_; }
+  const StateMatrix& covariance() const { return kf_.covariance(); }
+  bool still() const { return detector_.still(); }
+  double time() const { return last_t_.value_or(0.0); }
+  std::size_t smoother_epochs() const { return smoother_.size(); }
+
+ private:
+  struct Input {
+    double t = 0;
+    Eigen::Vector3d f, w;
+    std::optional<Eigen::Vector3d> b;
+    std::optional<double> depth;
+    bool gyro_bad = false;  // saturated: the rate is the last good one
+    bool accel_bad = false;
+  };
+  void reset();
+  void count(const char* name, std::uint64_t n = 1) { counters_[name] += n; }
+  bool accept(const Sample& s, Input& in);
+  void shift_gyro(Input in, std::vector<Estimate>& out);
+  void process(const Input& in, std::vector<Estimate>& out);
+  void before_alignment(const Input& in, std::vector<Estimate>& out);
+  void align(const Input& in);
+  void epoch(const Input& in, std::vector<Estimate>& out);
+  void still_updates(bool period_end);
+  void magnetic_update();
+  void emit(double t, std::vector<Estimate>& out);
+  Estimate row(double t) const;
+  void fill_attitude(Estimate& e, const NavState& x, const StateMatrix& p) const;
+  void apply(const StateVector& dx);
+  StillnessInput detector_input(const Input& in) const;
+  void refresh_noise(double dt);
+  double field_azimuth() const;
+  std::string reason() const;
+
+  NavigatorConfig config_;
+  std::map<std::string, std::uint64_t> counters_;
+  // Input.
+  std::optional<double> last_t_;
+  std::optional<Eigen::Vector3d> last_good_w_, last_good_f_;
+  std::deque<Input> shift_queue_;
+  std::deque<std::pair<double, Eigen::Vector3d>> gyro_history_;
+  double dt_nominal_ = 0;
+  bool saw_gyro_ = false, saw_no_gyro_ = false, saw_mag_ = false;
+  // Environment (given or learnt).
+  double g_ = 9.80665;
+  // g learnt at alignment: |f_align - b_a|, refreshed as the bias estimate changes; u = down in the
+  // tool frame at alignment couples g's error to the accelerometer-bias error (zero when g is given).
+  Eigen::Vector3d gravity_source_f_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gravity_coupling_ = Eigen::Vector3d::Zero();
+  std::optional<double> b0_, dip0_;
+  bool accel_in_g_ = false;
+  double accel_in_g_level_ = 0;
+  bool use_mag_ = false;  // magnetometer used for azimuth
+  std::string azimuth_reference_ = "magnetic";
+  // Filter.
+  bool aligned_ = false;
+  double aligned_at_ = 0;
+  NavState x_;
+  Eigen::Vector3d bg_ = Eigen::Vector3d::Zero(), ba_ = Eigen::Vector3d::Zero();
+  ErrorStateFilter kf_;
+  ProcessNoise noise_;
+  Mechanization mech_{Eigen::Vector3d::Zero(), 9.80665};
+  StepIntegrals integrals_;
+  std::optional<Input> prev_, prev2_;
+  double last_epoch_t_ = 0;
+  StateVector correction_ = StateVector::Zero();
+  StillnessDetector detector_;
+  StillnessState still_state_;
+  StillStats align_stats_, zaru_stats_, mag_stats_;
+  bool mag_done_this_period_ = false;
+  double depth0_ = 0;
+  bool have_depth0_ = false;
+  double last_depth_update_t_ = -1e300;
+  std::optional<double> latest_depth_;
+  std::uint32_t zupt_periods_ = 0;
+  std::string last_field_warning_;
+  double gap_warning_until_ = -1;
+  // Output.
+  double next_output_t_ = 0;
+  bool output_started_ = false;
+  double last_row_t_ = 0;
+  StillStats row_stats_;  // readings since the last row (totals, dip, rpm)
+  Eigen::Vector3d last_b_ = Eigen::Vector3d::Zero();
+  bool last_b_valid_ = false;
+  // Smoothing.
+  RtsSmoother smoother_;
+  StateMatrix last_phi_ = StateMatrix::Identity();
+  double last_phi_dt_ = 0;
+  struct PendingRow {
+    Estimate row;
+    std::optional<std::size_t> epoch;  // smoother epoch of the row (none before alignment)
+  };
+  std::vector<PendingRow> pending_;
+};
+
+}  // namespace plumb::strapdown

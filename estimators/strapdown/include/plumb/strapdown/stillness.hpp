@@ -1,0 +1,105 @@
+// Stillness detection for zero-velocity updates. Two detectors over a short sliding window:
+// - Magnitude (METHODS.md section 4, the source's test): every sample of the window has
+//   | |f| - g | < accel_tol and, when a magnetometer is used, | |B| - B0 | < field_tol; plus gyro
+//   quiet (below).
+// - GLRT (foot-mounted INS, Skog et al. 2010 / OpenShoe; no magnetometer):
+//   T = 1/W sum_k ( |f_k - g f_mean/|f_mean||^2 / sigma_a^2 + |w_k - w_expected|^2 / sigma_w^2 ),
+//   still when T < glrt_threshold. Under stillness T is about 6 (3 + 3 degrees of freedom).
+// Gyro quiet, for both: the mean of w - w_expected over the window, and over the quiet stretch so
+// far (an exponential mean over up to rate_memory_s, restarted only when a window is not quiet, so
+// a failed period does not start afresh at the next sample), is below gyro_tol + 4 sigma_w / sqrt(N). w_expected is the earth rate in the tool frame
+// plus the gyro bias estimate; the caller widens gyro_tol by what it does not know of them. The
+// period-long test catches a slow steady turn (a sliding build of 8 deg/30 m at 0.05 m/s turns at
+// 2.3e-4 rad/s, below one sample's noise of a MEMS gyro) that a short window cannot see.
+// Specific-force steadiness, for both: the window mean of f stays within 4 sigma (plus
+// accel_drift_tol) of the period's mean; a slow start along a near-horizontal axis changes the
+// direction of f long before it changes |f| (which moves by a^2 / 2g only).
+// With a measured depth, the depth must also stay within depth_tol over depth_window (a tool
+// sliding straight at constant speed is otherwise indistinguishable from a still one).
+// The period starts at the oldest sample of the first quiet window and is confirmed once it has
+// lasted min_still; once confirmed, it ends only when a test fails by `hysteresis` times its
+// threshold.
+#pragma once
+
+#include <deque>
+#include <optional>
+
+#include <Eigen/Core>
+
+namespace plumb::strapdown {
+
+struct StillnessConfig {
+  enum class Mode { Magnitude, Glrt };
+  Mode mode = Mode::Magnitude;
+  double window_s = 0.05;      // statistics window (at least kMinWindowSamples samples)
+  double min_still_s = 0.5;    // a still period counts from this duration on
+  double hysteresis = 1.5;     // exit thresholds = entry thresholds x this
+  double accel_tol = 0.05;     // m/s^2 (magnitude)
+  double field_tol_uT = 5;     // uT (magnitude, with magnetometer)
+  double gyro_tol = 1e-5;      // rad/s beyond the noise allowance
+  double sigma_a = 0.01;       // m/s^2 per sample (GLRT; also the magnitude noise allowance)
+  double sigma_w = 1e-4;       // rad/s per sample
+  double glrt_threshold = 15;
+  double accel_drift_tol = 0.002;  // m/s^2 beyond the noise allowance
+  double rate_memory_s = 10.0;
+  double depth_window_s = 1.0;
+  double depth_tol_m = 0.01;
+  static constexpr std::size_t kMinWindowSamples = 3;
+};
+
+struct StillnessInput {
+  double t = 0;
+  Eigen::Vector3d f = Eigen::Vector3d::Zero();
+  Eigen::Vector3d w_minus_expected = Eigen::Vector3d::Zero();  // rad/s
+  double g = 9.80665;
+  std::optional<double> field_deviation_uT;  // |B| - B0, when the field is to be checked
+  std::optional<double> depth_m;
+  double extra_gyro_tol = 0;                 // rad/s, what the caller does not know of w_expected
+};
+
+struct StillnessState {
+  bool still = false;    // confirmed still period in progress (this sample included)
+  bool started = false;  // confirmed at this sample
+  bool ended = false;    // the period that was confirmed ended at this sample (this sample moves)
+  double period_start = 0;
+};
+
+class StillnessDetector {
+ public:
+  explicit StillnessDetector(const StillnessConfig& config = {}) : config_(config) {}
+  void configure(const StillnessConfig& config) { config_ = config; reset(); }
+  const StillnessConfig& config() const { return config_; }
+  void set_noise(double sigma_a, double sigma_w) { config_.sigma_a = sigma_a; config_.sigma_w = sigma_w; }
+  StillnessState update(const StillnessInput& in);
+  // Forgets the window and any period (after a gap or a saturated sample).
+  void reset();
+  // Restarts the long rate and force means (when w_expected changes meaning, at alignment).
+  void restart_stretch();
+  bool still() const { return confirmed_; }
+  double last_statistic() const { return last_statistic_; }
+
+ private:
+  struct Entry {
+    double t;
+    Eigen::Vector3d f, w;
+    double f_dev, b_dev;
+  };
+  bool window_quiet(double factor, double g, double extra_gyro_tol);
+  bool period_quiet(double factor, double extra_gyro_tol) const;
+
+  StillnessConfig config_;
+  std::deque<Entry> window_;
+  std::deque<std::pair<double, double>> depths_;
+  bool candidate_ = false, confirmed_ = false;
+  double period_start_ = 0;
+  void extend_stretch(const StillnessInput& in);
+  // The quiet stretch: exponential means of w and f and their effective sample count.
+  Eigen::Vector3d stretch_w_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d stretch_f_ = Eigen::Vector3d::Zero();
+  double stretch_n_ = 0;
+  double last_dt_ = 0, last_t_ = 0;
+  Eigen::Vector3d window_f_mean_ = Eigen::Vector3d::Zero();
+  double last_statistic_ = 0;
+};
+
+}  // namespace plumb::strapdown

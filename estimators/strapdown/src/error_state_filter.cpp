@@ -1,0 +1,56 @@
+#include "plumb/strapdown/error_state_filter.hpp"
+
+#include "plumb/strapdown/rotation.hpp"
+
+namespace plumb::strapdown {
+
+using namespace index;
+
+StateMatrix ErrorStateFilter::transition(const StepIntegrals& in, const Eigen::Vector3d& w_ie,
+                                         const Eigen::Vector3d& gravity_coupling) {
+  StateMatrix phi = StateMatrix::Identity();
+  const double dt = in.dt;
+  if (!(dt > 0)) return phi;
+  const Eigen::Matrix3d c = in.c_bn / dt;
+  StateMatrix f = StateMatrix::Zero();
+  f.block<3, 3>(kAtt, kAtt) = -skew(w_ie);
+  f.block<3, 3>(kAtt, kGyroBias) = -c;
+  f.block<3, 3>(kVel, kAtt) = -skew(in.f_n / dt);
+  f.block<3, 3>(kVel, kVel) = -2.0 * skew(w_ie);
+  f.block<3, 3>(kVel, kAccelBias) = -c;
+  f.block<1, 3>(kVel + 2, kAccelBias) += gravity_coupling.transpose();
+  f.block<3, 3>(kPos, kVel) = Eigen::Matrix3d::Identity();
+  f.block<1, 3>(kDistance, kAtt) = (in.axis_cross_v / dt).transpose();
+  f.block<1, 3>(kDistance, kVel) = (in.axis_n / dt).transpose();
+  const StateMatrix fdt = f * dt;
+  phi += fdt + 0.5 * fdt * fdt;
+  return phi;
+}
+
+StateMatrix ErrorStateFilter::process_noise(const StateMatrix& phi, double dt, const ProcessNoise& n) {
+  StateMatrix q = StateMatrix::Zero();
+  // The white noises enter through C (a rotation), and are the same on each axis: C q I C' = q I.
+  q.block<3, 3>(kAtt, kAtt).diagonal().setConstant(n.gyro_arw * n.gyro_arw * dt);
+  q.block<3, 3>(kVel, kVel).diagonal().setConstant(n.accel_vrw * n.accel_vrw * dt);
+  q.block<3, 3>(kGyroBias, kGyroBias).diagonal().setConstant(n.gyro_bias_walk * n.gyro_bias_walk * dt);
+  q.block<3, 3>(kAccelBias, kAccelBias).diagonal().setConstant(n.accel_bias_walk * n.accel_bias_walk * dt);
+  StateMatrix qd = 0.5 * (phi * q * phi.transpose() + q);
+  return 0.5 * (qd + qd.transpose());
+}
+
+void ErrorStateFilter::predict(const StateMatrix& phi, const StateMatrix& q) {
+  p_ = phi * p_ * phi.transpose() + q;
+  symmetrize();
+}
+
+void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bias, Eigen::Vector3d& accel_bias) {
+  // C(true) = (I + [phi x])^-1 C(est) = exp(-[phi x]) C(est): a rotation on the navigation side.
+  state.q = (quaternion_from_rotation_vector(-dx.segment<3>(kAtt)) * state.q).normalized();
+  state.v -= dx.segment<3>(kVel);
+  state.p -= dx.segment<3>(kPos);
+  gyro_bias -= dx.segment<3>(kGyroBias);
+  accel_bias -= dx.segment<3>(kAccelBias);
+  state.s -= dx[kDistance];
+}
+
+}  // namespace plumb::strapdown

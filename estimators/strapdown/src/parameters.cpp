@@ -1,0 +1,161 @@
+#include "plumb/strapdown/parameters.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <string>
+
+#include "plumb/estimator/parameter_reader.hpp"
+
+namespace plumb::strapdown {
+
+using estimator::ParameterError;
+
+namespace {
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+constexpr double kDegPerHour = kDegToRad / 3600.0;       // deg/h -> rad/s
+constexpr double kPerRootHour = 1.0 / 60.0;              // x/sqrt(h) -> x/sqrt(s)
+constexpr double kMilliG = 9.80665e-3;                   // mg -> m/s^2
+
+// Grade presets: the simulator's table (sim/drilling.hpp) of typical sensor classes.
+struct Grade {
+  const char* name;
+  double gyro_bias_dph, gyro_arw, accel_bias_mg, accel_vrw;
+};
+constexpr Grade kGrades[] = {{"navigation", 0.01, 0.002, 0.025, 0.005},
+                             {"tactical", 1.0, 0.05, 0.3, 0.03},
+                             {"mems", 10.0, 0.3, 2.0, 0.06}};
+
+std::optional<double> optional_number(const estimator::ParameterReader& reader, const estimator::Parameters& given,
+                                      const std::string& name, double min, double max) {
+  const auto it = given.find(name);
+  if (it == given.end() || it->second.empty()) return std::nullopt;
+  return reader.number(name, min, max);
+}
+
+}  // namespace
+
+std::vector<estimator::ParameterSpec> parameter_specs() {
+  return {
+      {"latitude_deg", "45", "latitude of the collar (deg): the earth rate's split into north and down"},
+      {"gravity", "", "local gravity (m/s^2); empty: learnt from the first still period"},
+      {"field_uT", "", "reference total field (uT); empty: learnt from the first still period"},
+      {"dip_deg", "", "reference dip (deg, positive down); empty: learnt from the first still period"},
+      {"output_rate_hz", "1", "rows per second from the end of alignment on"},
+      {"use_magnetometer", "1", "use magnetometers for stillness and azimuth (0: gyros and accelerometers only)"},
+      {"initial_azimuth_deg", "", "tool azimuth at alignment (deg) when there is no trusted magnetometer; output azimuth is then 'relative'"},
+      {"initial_azimuth_sd_deg", "0", "standard deviation of initial_azimuth_deg (deg)"},
+      {"gyrocompass", "0", "azimuth from the earth rate at alignment (navigation-grade gyros only); azimuth is then 'true'"},
+      {"declination_deg", "", "magnetic declination (deg, east positive); given: azimuths are true"},
+      {"imu_grade", "tactical", "sensor noise preset: navigation, tactical or mems (the noise parameters below override it)"},
+      {"gyro_arw_deg_rt_h", "", "gyro angle random walk (deg/sqrt(h)); empty: from imu_grade"},
+      {"accel_vrw_mps_rt_h", "", "accelerometer velocity random walk (m/s/sqrt(h)); empty: from imu_grade"},
+      {"gyro_bias_dph", "", "gyro turn-on bias, 1 sigma per axis (deg/h); empty: from imu_grade"},
+      {"accel_bias_mg", "", "accelerometer turn-on bias, 1 sigma per axis (mg); empty: from imu_grade"},
+      {"gyro_bias_instability_dph", "0", "gyro bias wander reached over bias_time_s (deg/h, random walk)"},
+      {"accel_bias_instability_mg", "0", "accelerometer bias wander reached over bias_time_s (mg, random walk)"},
+      {"bias_time_s", "3600", "time over which the bias instabilities are reached (s)"},
+      {"still_detector", "auto", "stillness detector: magnitude (|f|, |B|, gyro quiet), glrt (f and w only) or auto (glrt without magnetometer)"},
+      {"still_window_s", "0.05", "detector window (s; at least 3 samples)"},
+      {"min_still_s", "0.5", "shortest still period used (s); 0.05 for foot-mounted or hand-held tools"},
+      {"still_hysteresis", "1.5", "a still period ends when a test fails by this factor times its threshold"},
+      {"still_accel_tol", "0.05", "magnitude detector: | |f| - g | limit per sample (m/s^2; never below 4 sigma of the noise)"},
+      {"still_field_tol_uT", "5", "magnitude detector: | |B| - B0 | limit per sample (uT)"},
+      {"still_gyro_tol_dph", "5", "gyro quiet: mean rate beyond earth rate and bias allowed (deg/h, plus the noise allowance)"},
+      {"still_accel_drift_tol", "0.002", "specific-force steadiness: window mean vs still-period mean beyond the noise allowance (m/s^2)"},
+      {"glrt_threshold", "15", "GLRT detector threshold (the statistic is about 6 for a still tool)"},
+      {"still_depth_tol_m", "0.01", "with depth: largest depth change over 1 s of a still tool (m)"},
+      {"align_s", "30", "longest stretch of the first still period used for alignment (s)"},
+      {"field_tol_uT", "0.5", "a stop's |B| further than this from the reference skips its azimuth update (uT)"},
+      {"dip_tol_deg", "0.3", "a stop's dip further than this from the reference skips its azimuth update (deg)"},
+      {"mag_heading_sd_deg", "0.05", "magnetic heading model error per stop (deg), beside the noise"},
+      {"mag_update_s", "5", "field averaged this long per stop for the azimuth update (s)"},
+      {"kf_rate_hz", "20", "filter epochs per second (covariance propagation, updates, smoother storage)"},
+      {"zupt_sd_mps", "0.001", "velocity of a still tool, 1 sigma (m/s)"},
+      {"zero_rate_interval_s", "1", "gyro data averaged per zero-rate update at stops (s)"},
+      {"tilt_update", "0", "separate accelerometer tilt update at stops (1: counts the accelerometer noise twice with the zero-velocity updates)"},
+      {"nhc_sd_mps", "0.01", "lateral velocity of a drilling tool, 1 sigma (m/s)"},
+      {"depth_sd_m", "0.01", "measured depth noise, 1 sigma (m)"},
+      {"depth_interval_s", "1", "seconds between measured-depth updates"},
+      {"smooth", "0", "offline backward (RTS) smoother: push() emits nothing, flush() emits every row smoothed"},
+      {"max_gap_s", "1", "a time step longer than this is a gap: reported, bridged by prediction only (s)"},
+      {"gyro_time_offset_s", "0", "gyro readings were measured this long after their time stamp (s)"},
+  };
+}
+
+NavigatorConfig parse_parameters(const estimator::Parameters& given) {
+  static const std::vector<estimator::ParameterSpec> specs = parameter_specs();
+  const estimator::ParameterReader r(given, specs);
+  NavigatorConfig c;
+  c.latitude = r.number("latitude_deg", -90, 90) * kDegToRad;
+  c.gravity = optional_number(r, given, "gravity", 0.1, 100);
+  c.field_uT = optional_number(r, given, "field_uT", 0.01, 1000);
+  if (auto dip = optional_number(r, given, "dip_deg", -90, 90)) c.dip = *dip * kDegToRad;
+  c.output_rate_hz = r.number("output_rate_hz", 1e-4, 1e4);
+  if (c.output_rate_hz <= 0) throw ParameterError("parameter 'output_rate_hz' must be > 0");
+  c.use_magnetometer = r.boolean("use_magnetometer");
+  if (auto a = optional_number(r, given, "initial_azimuth_deg", -360, 360)) c.initial_azimuth = *a * kDegToRad;
+  c.initial_azimuth_sd = r.number("initial_azimuth_sd_deg", 0, 180) * kDegToRad;
+  c.gyrocompass = r.boolean("gyrocompass");
+  if (auto d = optional_number(r, given, "declination_deg", -180, 180)) c.declination = *d * kDegToRad;
+  if (c.gyrocompass && c.initial_azimuth) {
+    throw ParameterError("parameters 'gyrocompass' and 'initial_azimuth_deg' exclude each other: give one azimuth source");
+  }
+
+  const auto grade_it = given.find("imu_grade");
+  const std::string grade_name = grade_it == given.end() ? "tactical" : grade_it->second;
+  const Grade* grade = nullptr;
+  for (const Grade& g : kGrades) {
+    if (grade_name == g.name) grade = &g;
+  }
+  if (grade == nullptr) {
+    throw ParameterError("parameter 'imu_grade': '" + grade_name + "' is not one of navigation, tactical, mems");
+  }
+  c.gyro_arw = optional_number(r, given, "gyro_arw_deg_rt_h", 0, 100).value_or(grade->gyro_arw) * kDegToRad * kPerRootHour;
+  c.accel_vrw = optional_number(r, given, "accel_vrw_mps_rt_h", 0, 100).value_or(grade->accel_vrw) * kPerRootHour;
+  c.gyro_bias_sd = optional_number(r, given, "gyro_bias_dph", 0, 1e5).value_or(grade->gyro_bias_dph) * kDegPerHour;
+  c.accel_bias_sd = optional_number(r, given, "accel_bias_mg", 0, 1e4).value_or(grade->accel_bias_mg) * kMilliG;
+  c.gyro_bias_instability = r.number("gyro_bias_instability_dph", 0, 1e5) * kDegPerHour;
+  c.accel_bias_instability = r.number("accel_bias_instability_mg", 0, 1e4) * kMilliG;
+  c.bias_time_s = r.number("bias_time_s", 1, 1e7);
+
+  const auto det = given.find("still_detector");
+  const std::string detector = det == given.end() ? "auto" : det->second;
+  if (detector == "auto") {
+    c.detector = DetectorChoice::Auto;
+  } else if (detector == "magnitude") {
+    c.detector = DetectorChoice::Magnitude;
+  } else if (detector == "glrt") {
+    c.detector = DetectorChoice::Glrt;
+  } else {
+    throw ParameterError("parameter 'still_detector': '" + detector + "' is not one of auto, magnitude, glrt");
+  }
+  c.still_window_s = r.number("still_window_s", 0, 60);
+  c.min_still_s = r.number("min_still_s", 0, 3600);
+  c.still_hysteresis = r.number("still_hysteresis", 1, 100);
+  c.still_accel_tol = r.number("still_accel_tol", 1e-6, 100);
+  c.still_field_tol_uT = r.number("still_field_tol_uT", 1e-6, 1000);
+  c.still_gyro_tol = r.number("still_gyro_tol_dph", 0, 1e6) * kDegPerHour;
+  c.glrt_threshold = r.number("glrt_threshold", 1e-3, 1e9);
+  c.still_accel_drift_tol = r.number("still_accel_drift_tol", 0, 100);
+  c.still_depth_tol_m = r.number("still_depth_tol_m", 1e-6, 100);
+  c.align_s = r.number("align_s", 0, 3600);
+  c.field_tol_uT = r.number("field_tol_uT", 0, 1000);
+  c.dip_tol = r.number("dip_tol_deg", 0, 90) * kDegToRad;
+  c.mag_heading_sd = r.number("mag_heading_sd_deg", 0, 90) * kDegToRad;
+  c.mag_update_s = r.number("mag_update_s", 0, 3600);
+  c.kf_rate_hz = r.number("kf_rate_hz", 0.01, 1e4);
+  c.zupt_sd = r.number("zupt_sd_mps", 1e-9, 10);
+  c.zaru_interval_s = r.number("zero_rate_interval_s", 0, 3600);
+  c.tilt_update = r.boolean("tilt_update");
+  c.nhc_sd = r.number("nhc_sd_mps", 1e-9, 10);
+  c.depth_sd = r.number("depth_sd_m", 1e-9, 100);
+  c.depth_interval_s = r.number("depth_interval_s", 0, 3600);
+  c.smooth = r.boolean("smooth");
+  c.max_gap_s = r.number("max_gap_s", 1e-6, 1e6);
+  c.gyro_time_offset_s = r.number("gyro_time_offset_s", -1, 1);
+  return c;
+}
+
+}  // namespace plumb::strapdown

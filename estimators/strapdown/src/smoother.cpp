@@ -1,0 +1,50 @@
+#include "plumb/strapdown/smoother.hpp"
+
+namespace plumb::strapdown {
+
+void RtsSmoother::store(const StateMatrix& phi, double dt, const StateVector& correction, const NavState& state,
+                        const Eigen::Vector3d& gyro_bias, const Eigen::Vector3d& accel_bias, const StateMatrix& p) {
+  Epoch e;
+  e.dt = dt;
+  std::size_t i = 0;
+  for (int r = 0; r < kStates; ++r) {
+    for (int c = r; c < kStates; ++c) e.p_upper[i++] = p(r, c);
+  }
+  Eigen::Map<StateMatrix>(e.phi) = phi;
+  Eigen::Map<StateVector>(e.correction) = correction;
+  e.q[0] = state.q.w();
+  e.q[1] = state.q.x();
+  e.q[2] = state.q.y();
+  e.q[3] = state.q.z();
+  for (int k = 0; k < 3; ++k) {
+    e.v[k] = state.v[k];
+    e.p[k] = state.p[k];
+    e.bg[k] = gyro_bias[k];
+    e.ba[k] = accel_bias[k];
+  }
+  e.s = state.s;
+  epochs_.push_back(e);
+}
+
+StateMatrix RtsSmoother::covariance(const Epoch& e) const {
+  StateMatrix p;
+  std::size_t i = 0;
+  for (int r = 0; r < kStates; ++r) {
+    for (int c = r; c < kStates; ++c) p(r, c) = p(c, r) = e.p_upper[i++];
+  }
+  return p;
+}
+
+SmoothedEpoch RtsSmoother::whole(const Epoch& e) const {
+  SmoothedEpoch out;
+  out.state.q = Eigen::Quaterniond(e.q[0], e.q[1], e.q[2], e.q[3]);
+  out.state.v = Eigen::Vector3d(e.v);
+  out.state.p = Eigen::Vector3d(e.p);
+  out.state.s = e.s;
+  out.gyro_bias = Eigen::Vector3d(e.bg);
+  out.accel_bias = Eigen::Vector3d(e.ba);
+  out.p = covariance(e);
+  return out;
+}
+
+}  // namespace plumb::strapdown

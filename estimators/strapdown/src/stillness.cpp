@@ -1,0 +1,142 @@
+#include "plumb/strapdown/stillness.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace plumb::strapdown {
+
+void StillnessDetector::reset() {
+  window_.clear();
+  depths_.clear();
+  candidate_ = confirmed_ = false;
+  restart_stretch();
+}
+
+void StillnessDetector::restart_stretch() {
+  stretch_w_.setZero();
+  stretch_f_.setZero();
+  stretch_n_ = 0;
+}
+
+// Exponential means with a memory of rate_memory_s: a plain mean until then.
+void StillnessDetector::extend_stretch(const StillnessInput& in) {
+  const double cap = last_dt_ > 0 ? std::max(1.0, config_.rate_memory_s / last_dt_) : 1e9;
+  stretch_n_ = std::min(stretch_n_ + 1.0, cap);
+  const double a = 1.0 / stretch_n_;
+  stretch_w_ += a * (in.w_minus_expected - stretch_w_);
+  stretch_f_ += a * (in.f - stretch_f_);
+}
+
+bool StillnessDetector::window_quiet(double factor, double g, double extra_gyro_tol) {
+  const double n = static_cast<double>(window_.size());
+  Eigen::Vector3d f_mean = Eigen::Vector3d::Zero(), w_mean = Eigen::Vector3d::Zero();
+  for (const Entry& e : window_) {
+    f_mean += e.f;
+    w_mean += e.w;
+  }
+  f_mean /= n;
+  w_mean /= n;
+  window_f_mean_ = f_mean;
+  const double gyro_allowance = config_.gyro_tol + extra_gyro_tol + 4.0 * config_.sigma_w / std::sqrt(n);
+  const bool gyro_ok = w_mean.norm() < factor * gyro_allowance;
+  if (config_.mode == StillnessConfig::Mode::Glrt) {
+    const double fn = f_mean.norm();
+    const Eigen::Vector3d g_dir = fn > 0 ? Eigen::Vector3d(f_mean / fn) : Eigen::Vector3d::Zero();
+    const double ia = 1.0 / (config_.sigma_a * config_.sigma_a), iw = 1.0 / (config_.sigma_w * config_.sigma_w);
+    double t = 0;
+    // The rate energy counts only what exceeds the caller's ignorance of w_expected (before
+    // alignment the whole earth rate): a navigation-grade gyro's noise is far below the earth rate.
+    for (const Entry& e : window_) {
+      const double w_excess = std::max(0.0, e.w.norm() - extra_gyro_tol);
+      t += (e.f - g * g_dir).squaredNorm() * ia + w_excess * w_excess * iw;
+    }
+    last_statistic_ = t / n;
+    return gyro_ok && last_statistic_ < factor * config_.glrt_threshold;
+  }
+  double f_dev = 0, b_dev = 0;
+  for (const Entry& e : window_) {
+    f_dev = std::max(f_dev, std::abs(e.f_dev));
+    b_dev = std::max(b_dev, std::abs(e.b_dev));
+  }
+  last_statistic_ = f_dev;
+  // The tolerance never falls below the sensor noise: 4 sigma per sample.
+  const double accel_tol = std::max(config_.accel_tol, 4.0 * config_.sigma_a);
+  return gyro_ok && f_dev < factor * accel_tol && b_dev < factor * config_.field_tol_uT;
+}
+
+bool StillnessDetector::period_quiet(double factor, double extra_gyro_tol) const {
+  if (stretch_n_ < 1) return true;
+  const double allowance = config_.gyro_tol + extra_gyro_tol + 4.0 * config_.sigma_w / std::sqrt(stretch_n_);
+  const double n_window = static_cast<double>(window_.size());
+  const double f_allowance =
+      config_.accel_drift_tol + 4.0 * config_.sigma_a * std::sqrt(1.0 / n_window + 1.0 / stretch_n_);
+  const bool f_steady = (window_f_mean_ - stretch_f_).norm() < factor * f_allowance;
+  return f_steady && stretch_w_.norm() < factor * allowance;
+}
+
+StillnessState StillnessDetector::update(const StillnessInput& in) {
+  StillnessState out;
+  if (!window_.empty() && in.t > last_t_) last_dt_ = in.t - last_t_;
+  last_t_ = in.t;
+  window_.push_back({in.t, in.f, in.w_minus_expected, in.f.norm() - in.g,
+                     in.field_deviation_uT.value_or(0.0)});
+  while (window_.size() > StillnessConfig::kMinWindowSamples && window_.front().t < in.t - config_.window_s) {
+    window_.pop_front();
+  }
+  bool depth_ok = true, depth_ok_exit = true;
+  if (in.depth_m) {
+    depths_.emplace_back(in.t, *in.depth_m);
+    while (depths_.size() > 2 && depths_.front().first < in.t - config_.depth_window_s) depths_.pop_front();
+    const auto [lo, hi] = std::minmax_element(depths_.begin(), depths_.end(),
+                                              [](const auto& a, const auto& b) { return a.second < b.second; });
+    const double range = hi->second - lo->second;
+    depth_ok = range < config_.depth_tol_m;
+    depth_ok_exit = range < config_.hysteresis * config_.depth_tol_m;
+  }
+  const bool enough = window_.size() >= StillnessConfig::kMinWindowSamples;
+  const double factor = confirmed_ ? config_.hysteresis : 1.0;
+  const bool quiet = enough && (confirmed_ ? depth_ok_exit : depth_ok) && window_quiet(factor, in.g, in.extra_gyro_tol);
+  // Only clear motion (a window failing twice the exit thresholds) restarts the long means: a
+  // borderline window inside a slow steady turn must not give the turn a fresh start.
+  if (!quiet) {
+    if (!enough || !window_quiet(2.0 * config_.hysteresis, in.g, in.extra_gyro_tol)) restart_stretch();
+  } else if (stretch_n_ == 0) {
+    for (const Entry& e : window_) {
+      StillnessInput past;
+      past.f = e.f;
+      past.w_minus_expected = e.w;
+      extend_stretch(past);
+    }
+  } else {
+    extend_stretch(in);
+  }
+  const bool steady = quiet && period_quiet(factor, in.extra_gyro_tol);
+
+  if (confirmed_) {
+    if (steady) {
+      out.still = true;
+      out.period_start = period_start_;
+      return out;
+    }
+    out.ended = true;
+    candidate_ = confirmed_ = false;
+    return out;
+  }
+  if (!steady) {
+    candidate_ = false;
+    return out;
+  }
+  if (!candidate_) {
+    // The whole window was quiet: the period began at its oldest sample.
+    candidate_ = true;
+    period_start_ = window_.front().t;
+  }
+  if (in.t - period_start_ >= config_.min_still_s - 1e-9) {
+    confirmed_ = true;
+    out.still = out.started = true;
+    out.period_start = period_start_;
+  }
+  return out;
+}
+
+}  // namespace plumb::strapdown

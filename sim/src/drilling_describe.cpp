@@ -1,0 +1,52 @@
+// One readable line per drilling scenario and IMU grade, for the logs of the components.
+#include <sstream>
+
+#include "plumb/sim/drilling.hpp"
+
+namespace plumb::sim {
+
+std::string describe(const ImuGrade& g) {
+  std::ostringstream out;
+  out << g.name << " IMU (gyro bias " << g.gyro_bias_deg_h << " deg/h, ARW " << g.gyro_arw_deg_rt_h
+      << " deg/sqrt(h), accel bias " << g.accel_bias_mg << " mg, VRW " << g.accel_vrw_mps_rt_h << " m/s/sqrt(h), ";
+  if (g.gyro_range_deg_s > 0)
+    out << "range " << g.gyro_range_deg_s << " deg/s)";
+  else
+    out << "unlimited range)";
+  return out.str();
+}
+
+std::string describe(const DrillingScenario& s) {
+  const DrillingTrajectory trajectory(s.plan);
+  std::size_t drills = 0, rotary = 0;
+  for (const auto& seg : s.plan.segments)
+    if (seg.kind == SegmentKind::Drill) {
+      ++drills;
+      if (seg.mode == SteeringMode::Rotary) ++rotary;
+    }
+  std::ostringstream out;
+  out.precision(6);
+  out << "drilling run '" << s.tool_id << "': " << trajectory.duration_s() << " s at " << s.sample_rate_hz << " Hz; "
+      << s.plan.alignment_s << " s alignment, " << drills << " drilling segment(s) (" << rotary << " rotary) over "
+      << trajectory.drilled_length_m() << " m, " << trajectory.stop_count() << " stop(s); start I "
+      << s.plan.inclination_deg << " deg, A " << s.plan.azimuth_deg << " deg, T " << s.plan.toolface_deg << " deg; "
+      << describe(s.grade) << "; latitude " << s.latitude_deg << " deg, g " << s.g << " m/s2, B " << s.total_b
+      << " uT, dip " << s.dip_deg << " deg; ";
+  if (s.magnetometer.present)
+    out << "magnetometer noise " << s.magnetometer.sigma_uT << " uT, " << s.magnetometer.disturbances.size()
+        << " disturbed stop(s); ";
+  else
+    out << "no magnetometer; ";
+  if (s.depth.present)
+    out << "depth noise " << s.depth.sigma_m << " m, step " << s.depth.quantum_m << " m; ";
+  else
+    out << "no depth; ";
+  if (s.vibration.lateral_rms > 0)
+    out << "vibration " << s.vibration.lateral_rms << " m/s2 rms at " << s.vibration.frequency_hz << " Hz; ";
+  if (s.vibration.shock_rate_hz > 0 && s.vibration.shock_peak != 0)
+    out << "shocks " << s.vibration.shock_peak << " m/s2 at " << s.vibration.shock_rate_hz << " /s; ";
+  out << "seed " << s.seed;
+  return out.str();
+}
+
+}  // namespace plumb::sim

@@ -1,0 +1,62 @@
+// The named IMU grades (values tabled in drilling.hpp) and their conversion to SI units.
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "plumb/core/attitude.hpp"
+#include "plumb/sim/drilling.hpp"
+
+namespace plumb::sim {
+namespace {
+
+constexpr double kSecondsPerHour = 3600.0;
+constexpr double kMilliG = 9.80665e-3;  // m/s^2, standard gravity / 1000
+
+ImuGrade make(const char* name, double gyro_bias, double arw, double accel_bias, double vrw, double range) {
+  ImuGrade g;
+  g.name = name;
+  g.gyro_bias_deg_h = gyro_bias;
+  g.gyro_arw_deg_rt_h = arw;
+  g.accel_bias_mg = accel_bias;
+  g.accel_vrw_mps_rt_h = vrw;
+  g.gyro_range_deg_s = range;
+  return g;
+}
+
+}  // namespace
+
+// Ring-laser / high-end fibre-optic gyros and servo accelerometers: enough to gyrocompass.
+ImuGrade ImuGrade::navigation() { return make("navigation", 0.01, 0.002, 0.025, 0.005, 500); }
+// Fibre-optic gyros and quartz accelerometers of gyro survey and MWD tools.
+ImuGrade ImuGrade::tactical() { return make("tactical", 1.0, 0.05, 0.3, 0.03, 1000); }
+// Industrial MEMS (the source's class of sensor).
+ImuGrade ImuGrade::mems() { return make("mems", 10.0, 0.3, 2.0, 0.06, 2000); }
+ImuGrade ImuGrade::perfect() { return make("perfect", 0, 0, 0, 0, 0); }
+
+ImuGrade ImuGrade::named(const std::string& name) {
+  if (name == "navigation") return navigation();
+  if (name == "tactical") return tactical();
+  if (name == "mems") return mems();
+  if (name == "perfect") return perfect();
+  throw std::invalid_argument("unknown IMU grade '" + name + "' (navigation, tactical, mems or perfect)");
+}
+
+double ImuGrade::gyro_bias_sigma() const { return gyro_bias_deg_h * kDeg / kSecondsPerHour; }
+
+double ImuGrade::accel_bias_sigma() const { return accel_bias_mg * kMilliG; }
+
+// A density per sqrt(hour) is density / 60 per sqrt(second); white noise of that density sampled
+// every dt has sigma = density / sqrt(dt).
+double ImuGrade::gyro_noise_sigma(double dt) const {
+  return gyro_arw_deg_rt_h * kDeg / std::sqrt(kSecondsPerHour) / std::sqrt(dt);
+}
+
+double ImuGrade::accel_noise_sigma(double dt) const {
+  return accel_vrw_mps_rt_h / std::sqrt(kSecondsPerHour) / std::sqrt(dt);
+}
+
+double ImuGrade::gyro_range() const {
+  return gyro_range_deg_s > 0 ? gyro_range_deg_s * kDeg : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace plumb::sim

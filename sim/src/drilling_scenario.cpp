@@ -1,0 +1,94 @@
+// The named drilling runs (issue 8's accuracy case, a stop-and-go survey run) and the checks of a
+// scenario's sensor and environment parameters.
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "drilling_detail.hpp"
+#include "plumb/sim/drilling.hpp"
+
+namespace plumb::sim {
+namespace {
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument("invalid drilling scenario: " + what);
+}
+
+bool finite_nonneg(double v) { return std::isfinite(v) && v >= 0; }
+
+DrillingScenario with_sensors(const ImuGrade& grade, double rate_hz, std::uint64_t seed) {
+  DrillingScenario s;
+  s.grade = grade;
+  s.sample_rate_hz = rate_hz;
+  s.seed = seed;
+  s.latitude_deg = 35;
+  s.g = 9.80665;
+  s.total_b = 50;
+  s.dip_deg = 60;
+  s.magnetometer.sigma_uT = 0.1;
+  return s;
+}
+
+}  // namespace
+
+DrillingScenario DrillingScenario::reference(const ImuGrade& grade, double rate_hz, std::uint64_t seed) {
+  DrillingScenario s = with_sensors(grade, rate_hz, seed);
+  s.tool_id = "drilling-reference";
+  auto& p = s.plan;
+  p.inclination_deg = 85;
+  p.azimuth_deg = 30;
+  p.toolface_deg = 20;
+  p.alignment_s = 60;
+  p.ramp_s = 5;
+  // 8 m at 0.05 m/s plus the ramps is 165 s; with 60 s connections the run lasts 60 + 4 x 225 s.
+  p.segments = {DrillSegment::drill(8, 0.05, 8, 0),         DrillSegment::stop(60),
+                DrillSegment::rotary(8, 0.05, 30, -1, 0),   DrillSegment::stop(60),
+                DrillSegment::drill(8, 0.05, 6, -10),       DrillSegment::stop(60),
+                DrillSegment::rotary(8, 0.05, 30, 2, 3),    DrillSegment::stop(60)};
+  return s;
+}
+
+DrillingScenario DrillingScenario::survey_stop_and_go(const ImuGrade& grade, double rate_hz, std::uint64_t seed) {
+  DrillingScenario s = with_sensors(grade, rate_hz, seed);
+  s.tool_id = "drilling-survey";
+  auto& p = s.plan;
+  p.inclination_deg = 45;
+  p.azimuth_deg = 120;
+  p.toolface_deg = 0;
+  p.alignment_s = 60;
+  p.ramp_s = 5;
+  p.segments.clear();
+  for (int k = 0; k < 6; ++k) {
+    p.segments.push_back(DrillSegment::rotary(1.5, 0.05, 60, 3, 1));
+    p.segments.push_back(DrillSegment::stop(30));
+  }
+  return s;
+}
+
+double DrillingScenario::duration_s() const { return DrillingTrajectory(plan).duration_s(); }
+
+namespace detail {
+
+void validate(const DrillingScenario& s, std::size_t stop_count) {
+  validate_imu_site(s, require);
+  require(finite_nonneg(s.magnetometer.sigma_uT), "magnetometer noise must be finite and >= 0 uT");
+  for (const auto& d : s.magnetometer.disturbances) {
+    require(d.stop_index < stop_count, "magnetic disturbance at stop " + std::to_string(d.stop_index) +
+                                           " but the plan has " + std::to_string(stop_count) + " stop(s) (0-based)");
+    require(std::isfinite(d.delta_total_uT) && std::isfinite(d.delta_dip_deg),
+            "magnetic disturbance offsets must be finite");
+    require(s.total_b + d.delta_total_uT >= 0 && std::abs(s.dip_deg + d.delta_dip_deg) <= 90,
+            "a disturbed field must keep |B| >= 0 and dip within [-90, 90] deg");
+  }
+  require(finite_nonneg(s.depth.sigma_m) && finite_nonneg(s.depth.quantum_m), "depth noise and quantum must be >= 0 m");
+  const auto& v = s.vibration;
+  require(finite_nonneg(v.lateral_rms), "vibration rms must be >= 0");
+  require(std::isfinite(v.frequency_hz) && v.frequency_hz > 0, "vibration frequency must be > 0 Hz");
+  require(finite_nonneg(v.shock_rate_hz), "shock rate must be >= 0 Hz");
+  require(std::isfinite(v.shock_peak) && std::isfinite(v.shock_duration_s) && v.shock_duration_s > 0,
+          "shock peak and duration must be finite, duration > 0");
+  require(s.tool_id.size() <= 31, "tool id: at most 31 characters");
+}
+
+}  // namespace detail
+}  // namespace plumb::sim

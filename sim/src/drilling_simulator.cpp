@@ -1,0 +1,116 @@
+// The sensors of the drilling tool sampled from the true trajectory: gyros w_ib = w_nb + C_n^b w_ie,
+// accelerometers f = C_n^b (dv/dt + 2 w_ie x v - g_n), magnetometers C_n^b B_n (disturbed at chosen
+// stops), the rig's measured depth; then biases, white noise, vibration and gyro saturation.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Geometry>
+
+#include "drilling_detail.hpp"
+#include "plumb/core/attitude.hpp"
+#include "plumb/sim/drilling.hpp"
+#include "plumb/sim/run_all.hpp"
+
+namespace plumb::sim {
+namespace {
+
+constexpr double kRadPerSToRpm = 60.0 / (2.0 * kPi);
+
+// Separate streams per purpose so that adding vibration or changing a bias does not change the
+// noise sequence of the others.
+constexpr std::uint64_t kVibrationStream = 0x9e3779b97f4a7c15ULL;
+
+}  // namespace
+
+DrillingSimulator::DrillingSimulator(const DrillingScenario& scenario)
+    : scenario_(scenario),
+      trajectory_(scenario.plan),
+      imu_(scenario.grade, scenario.sample_rate_hz, scenario.seed, scenario.gyro_bias, scenario.accel_bias,
+           scenario.earth_rate, scenario.latitude_deg),
+      rng_(scenario.seed),
+      vib_rng_(scenario.seed ^ kVibrationStream) {
+  detail::validate(scenario_, trajectory_.stop_count());
+
+  // The platform's vibration model: tones over 0.75..1.25 of the centre frequency, random phases.
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const auto& v = scenario_.vibration;
+  for (int axis = 0; axis < 2; ++axis)
+    for (int k = 0; k < kVibrationTones; ++k) {
+      vib_freq_[axis][k] = v.frequency_hz * (0.75 + 0.5 * k / (kVibrationTones - 1));
+      vib_phase_[axis][k] = 2.0 * kPi * unit(vib_rng_);
+    }
+  vib_amplitude_ = v.lateral_rms * std::sqrt(2.0 / kVibrationTones);
+  next_shock_ = v.shock_rate_hz > 0 && v.shock_peak != 0
+                    ? std::exponential_distribution<double>(v.shock_rate_hz)(vib_rng_)
+                    : std::numeric_limits<double>::infinity();
+}
+
+std::size_t DrillingSimulator::sample_count() const {
+  return static_cast<std::size_t>(std::llround(trajectory_.duration_s() * scenario_.sample_rate_hz));
+}
+
+bool DrillingSimulator::done() const { return index_ >= sample_count(); }
+
+double DrillingSimulator::time_of(std::size_t index) const {
+  return static_cast<double>(index) / scenario_.sample_rate_hz;
+}
+
+Eigen::Vector3d DrillingSimulator::field_at(const DrillingState& st) const {
+  double total = scenario_.total_b, dip = scenario_.dip_deg;
+  const auto& phase = trajectory_.phases()[st.phase];
+  if (st.still && phase.stop_index)
+    for (const auto& d : scenario_.magnetometer.disturbances)
+      if (d.stop_index == *phase.stop_index) {
+        total += d.delta_total_uT;
+        dip += d.delta_dip_deg;
+      }
+  return st.c_nb * field_ned(total, dip * kDeg);
+}
+
+Sample DrillingSimulator::next(TruthSample* truth) {
+  const double t = time_of(index_);
+  const DrillingState st = trajectory_.at(t);
+  const Eigen::Vector3d vibration = vibration_at(t, st.drive);
+
+  // Always draw all ten so the noise sequence does not depend on which sigmas are zero.
+  Eigen::Vector3d n_w, n_a, n_m;
+  for (int i = 0; i < 3; ++i) n_w[i] = normal_(rng_);
+  for (int i = 0; i < 3; ++i) n_a[i] = normal_(rng_);
+  for (int i = 0; i < 3; ++i) n_m[i] = normal_(rng_);
+  const double n_d = normal_(rng_);
+
+  Sample out;
+  out.seq = index_;
+  out.t = t;
+  imu_.measure(st.w_nb, st.c_nb, st.acceleration, st.velocity, scenario_.g, vibration, n_w, n_a, out);
+  if (scenario_.magnetometer.present) out.b = field_at(st) + scenario_.magnetometer.sigma_uT * n_m;
+  if (scenario_.depth.present) {
+    double depth = st.depth_m + scenario_.depth.sigma_m * n_d;
+    const double q = scenario_.depth.quantum_m;
+    if (q > 0) depth = q * std::round(depth / q);
+    out.depth_m = depth;
+    out.flags |= flags::kHasDepth;
+  }
+  if (truth) {
+    truth->t = t;
+    truth->inclination_deg = st.inclination / kDeg;
+    truth->azimuth_deg = wrap_deg_360(st.azimuth / kDeg);
+    truth->toolface_deg = wrap_deg_360(st.toolface / kDeg);
+    truth->rpm = st.toolface_rate * kRadPerSToRpm;
+    truth->has_position = true;
+    truth->north_m = st.position.x();
+    truth->east_m = st.position.y();
+    truth->down_m = st.position.z();
+    truth->vn_mps = st.velocity.x();
+    truth->ve_mps = st.velocity.y();
+    truth->vd_mps = st.velocity.z();
+    truth->depth_m = st.depth_m;
+  }
+  ++index_;
+  return out;
+}
+
+std::vector<Sample> DrillingSimulator::run(std::vector<TruthSample>* truth) { return run_all(*this, truth); }
+
+}  // namespace plumb::sim

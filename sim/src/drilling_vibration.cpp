@@ -1,0 +1,37 @@
+// Lateral vibration and shocks of a drilling tool: zero-mean accelerations on x and y added to the
+// specific force only while drilling, scaled by the drive factor so they fade in and out with the
+// speed ramps and vanish while the tool stands (the stillness a navigator relies on stays exact).
+#include <algorithm>
+#include <cmath>
+
+#include "plumb/core/attitude.hpp"
+#include "plumb/sim/drilling.hpp"
+
+namespace plumb::sim {
+
+Eigen::Vector3d DrillingSimulator::vibration_at(double t, double drive) {
+  Eigen::Vector3d out = Eigen::Vector3d::Zero();
+  const auto& v = scenario_.vibration;
+  if (vib_amplitude_ > 0 && drive > 0)
+    for (int axis = 0; axis < 2; ++axis)
+      for (int k = 0; k < kVibrationTones; ++k)
+        out[axis] += drive * vib_amplitude_ * std::sin(2.0 * kPi * vib_freq_[axis][k] * t + vib_phase_[axis][k]);
+  // Poisson arrivals (as on the platform); a shock keeps the drive of its start, and one arriving
+  // while the tool stands is lost.
+  const double duration = std::max(v.shock_duration_s, 2.0 / scenario_.sample_rate_hz);
+  while (t >= next_shock_) {
+    shock_start_ = next_shock_;
+    shock_until_ = shock_start_ + duration;
+    shock_dir_ = 2.0 * kPi * std::uniform_real_distribution<double>(0.0, 1.0)(vib_rng_);
+    shock_drive_ = trajectory_.at(shock_start_).drive;
+    next_shock_ += std::exponential_distribution<double>(v.shock_rate_hz)(vib_rng_);
+  }
+  if (t >= shock_start_ && t < shock_until_ && drive > 0) {
+    const double a = shock_drive_ * v.shock_peak * std::sin(kPi * (t - shock_start_) / duration);
+    out.x() += a * std::cos(shock_dir_);
+    out.y() += a * std::sin(shock_dir_);
+  }
+  return out;
+}
+
+}  // namespace plumb::sim

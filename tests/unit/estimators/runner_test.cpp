@@ -1,0 +1,103 @@
+// The runner that every host shares: estimates carry the plugin's name, parameters reach the
+// estimator that declares them, counters add up, reset starts over.
+#include <gtest/gtest.h>
+
+#include "plumb/estimator/runner.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace plumb::estimator {
+namespace {
+
+// Emits one estimate every `every` samples; valid when the sample's f.x is positive.
+class Counting final : public Estimator {
+ public:
+  explicit Counting(bool gyro) : gyro_(gyro) {}
+  Info info() const override {
+    Info i;
+    i.name = "whatever";  // the runner labels by the slot's name, not by this
+    i.parameters = {{"every", "2", ""}};
+    i.uses_gyro = gyro_;
+    return i;
+  }
+  void configure(const Parameters& p) override {
+    every_ = p.contains("every") ? std::stoi(p.at("every")) : 2;
+    seen_ = 0;
+  }
+  void push(std::span<const Sample> samples, std::vector<Estimate>& out) override {
+    for (const auto& s : samples) {
+      if (++seen_ % every_ != 0) continue;
+      Estimate e;
+      e.valid = s.f.x() > 0;
+      e.t_end = s.t;
+      out.push_back(e);
+    }
+  }
+  void flush(std::vector<Estimate>& out) override {
+    if (seen_ % every_ != 0) out.push_back(Estimate{});
+    seen_ = 0;
+  }
+  Counters counters() const override { return {{"seen", seen_}}; }
+
+ private:
+  bool gyro_;
+  int every_ = 2;
+  std::uint64_t seen_ = 0;
+};
+
+EstimatorPtr make(bool gyro) { return EstimatorPtr(new Counting(gyro), [](Estimator* e) { delete e; }); }
+
+std::vector<Sample> samples(int n, double fx) {
+  std::vector<Sample> out(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) out[static_cast<std::size_t>(i)].t = i, out[static_cast<std::size_t>(i)].f.x() = fx;
+  return out;
+}
+
+TEST(Runner, LabelsEveryEstimateWithItsSlotAndCountsThem) {
+  Runner runner;
+  runner.add("a", make(false));
+  runner.add("b", make(true));
+  runner.configure({{{"every", "2"}}, {{"every", "3"}}});
+  std::map<std::string, int> got;
+  const auto sink = [&](const Runner::Slot& slot, Estimate& e) {
+    EXPECT_EQ(e.estimator, slot.name);
+    ++got[slot.name];
+  };
+  runner.push(samples(6, 1.0), sink);
+  EXPECT_EQ(got["a"], 3);
+  EXPECT_EQ(got["b"], 2);
+  runner.push(samples(1, -1.0), sink);
+  runner.flush(sink);  // a: 7th sample leaves a partial window; b: likewise
+  EXPECT_EQ(runner.slots()[0].estimates, 4u);
+  EXPECT_EQ(runner.slots()[0].invalid, 1u);
+  EXPECT_EQ(runner.needing_gyro(), std::vector<std::string>{"b"});
+  const auto counters = runner.counters();
+  EXPECT_NE(std::find(counters.begin(), counters.end(), std::pair<std::string, std::uint64_t>{"a.estimates", 4}),
+            counters.end());
+}
+
+TEST(Runner, AssignmentsGoOnlyToTheEstimatorsThatDeclareThem) {
+  Runner runner;
+  runner.add("a", make(false));
+  runner.configure(std::vector<std::string>{"every=5"}, std::nullopt);
+  EXPECT_EQ(runner.slots()[0].parameters.at("every"), "5");
+  EXPECT_THROW(runner.configure(std::vector<std::string>{"evry=5"}, std::nullopt), ParameterError);
+}
+
+TEST(Runner, ResetStartsEachEstimatorOverWithItsParameters) {
+  Runner runner;
+  runner.add("a", make(false));
+  runner.configure({{{"every", "4"}}});
+  int n = 0;
+  const auto sink = [&](const Runner::Slot&, Estimate&) { ++n; };
+  runner.push(samples(3, 1.0), sink);
+  runner.reset();
+  runner.push(samples(3, 1.0), sink);
+  EXPECT_EQ(n, 0);  // without the reset the 4th sample would have completed a window
+  runner.push(samples(1, 1.0), sink);
+  EXPECT_EQ(n, 1);
+}
+
+}  // namespace
+}  // namespace plumb::estimator

@@ -1,0 +1,62 @@
+// Two tools on one sensor topic: each is its own stream with its own sequence accounting; a
+// selected tool takes only its own batches and counts the others.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+
+#include "tool_streams.hpp"
+
+namespace plumb::components {
+namespace {
+
+void feed(ToolStreams& streams, const std::string& tool, std::uint64_t first, int n) {
+  SequenceAccount* a = streams.route(tool);
+  if (!a) return;
+  for (int i = 0; i < n; ++i) a->account(first + static_cast<std::uint64_t>(i));
+}
+
+TEST(ToolStreams, InterleavedToolsLoseNothing) {
+  ToolStreams streams;
+  // A turntable counting from 0 and a tool counting from 50000, batch by batch in turn.
+  for (int b = 0; b < 100; ++b) {
+    feed(streams, "sim-turntable", static_cast<std::uint64_t>(32 * b), 32);
+    feed(streams, "T1", 50000 + static_cast<std::uint64_t>(32 * b), 32);
+  }
+  EXPECT_EQ(streams.streams().size(), 2u);
+  EXPECT_EQ(streams.lost(), 0u);
+  EXPECT_EQ(streams.gaps(), 0u);
+  EXPECT_EQ(streams.backwards(), 0u);
+  EXPECT_EQ(streams.other_tool_batches(), 0u);
+}
+
+TEST(ToolStreams, GapsAreCountedPerTool) {
+  ToolStreams streams;
+  feed(streams, "A", 0, 10);
+  feed(streams, "B", 0, 10);
+  feed(streams, "A", 15, 5);  // 10..14 lost on A
+  feed(streams, "B", 10, 5);
+  EXPECT_EQ(streams.streams().at("A").lost, 5u);
+  EXPECT_EQ(streams.streams().at("B").lost, 0u);
+  EXPECT_EQ(streams.lost(), 5u);
+}
+
+TEST(ToolStreams, SelectedToolCountsTheOthers) {
+  ToolStreams streams("T1");
+  feed(streams, "T1", 0, 32);
+  EXPECT_EQ(streams.route("sim-turntable"), nullptr);
+  feed(streams, "T1", 32, 32);
+  EXPECT_EQ(streams.streams().size(), 1u);
+  EXPECT_EQ(streams.other_tool_batches(), 1u);
+  EXPECT_EQ(streams.lost(), 0u);
+}
+
+TEST(ToolStreams, RestartForgetsTheExpectedNumber) {
+  ToolStreams streams;
+  feed(streams, "A", 0, 10);
+  streams.restart_all();
+  feed(streams, "A", 1000, 10);
+  EXPECT_EQ(streams.lost(), 0u);
+}
+
+}  // namespace
+}  // namespace plumb::components

@@ -1,0 +1,115 @@
+// Runs the navigator over DrillingSimulator runs and measures it against the truth.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "plumb/core/attitude.hpp"
+#include "plumb/sim/drilling.hpp"
+#include "plumb/strapdown/navigator.hpp"
+#include "plumb/strapdown/parameters.hpp"
+
+namespace plumb::strapdown::test {
+
+struct RunMetrics {
+  std::size_t rows = 0, valid_rows = 0;
+  double max_inc_err_deg = 0, max_azi_err_deg = 0, max_tf_err_deg = 0;
+  double end_position_err_m = 0, drilled_m = 0;
+  double sum_z2 = 0;   // sum of (error / sigma)^2 over I, A, T of every valid row
+  double n_z = 0;
+  double sum_z2_angle[3] = {0, 0, 0}, n_z_angle[3] = {0, 0, 0};
+  double count_z_above_3 = 0;
+  double end_azi_err_deg = 0, end_azi_sd_deg = 0;
+  double max_attitude_err_deg() const { return std::max({max_inc_err_deg, max_azi_err_deg, max_tf_err_deg}); }
+  double end_position_pct() const { return drilled_m > 0 ? 100.0 * end_position_err_m / drilled_m : 0.0; }
+  double rms_z() const { return n_z > 0 ? std::sqrt(sum_z2 / n_z) : 0.0; }
+};
+
+// Parameters matching a scenario's sensors (what a user of that tool would set).
+inline estimator::Parameters parameters_for(const sim::DrillingScenario& s) {
+  estimator::Parameters p;
+  char text[64];
+  auto set = [&](const char* name, double v) {
+    std::snprintf(text, sizeof text, "%.10g", v);
+    p[name] = text;
+  };
+  set("latitude_deg", s.latitude_deg);
+  // A survey crew enters the local gravity; the simulator's magnetometer has white noise only,
+  // so the heading model error per stop is set near zero (the default 0.05 deg allows for
+  // calibration and crustal-field errors of a real tool).
+  set("gravity", s.g);
+  set("mag_heading_sd_deg", 0.005);
+  set("gyro_arw_deg_rt_h", std::max(s.grade.gyro_arw_deg_rt_h, 1e-4));
+  set("accel_vrw_mps_rt_h", std::max(s.grade.accel_vrw_mps_rt_h, 1e-4));
+  set("gyro_bias_dph", std::max(s.grade.gyro_bias_deg_h, 1e-3));
+  set("accel_bias_mg", std::max(s.grade.accel_bias_mg, 1e-3));
+  return p;
+}
+
+inline RunMetrics run_drilling(const sim::DrillingScenario& scenario, const estimator::Parameters& params,
+                               bool use_depth = true, std::map<std::string, std::uint64_t>* counters = nullptr) {
+  sim::DrillingSimulator simulator(scenario);
+  std::vector<TruthSample> truth;
+  std::vector<Sample> samples = simulator.run(&truth);
+  if (!use_depth) {
+    for (Sample& s : samples) s.flags &= ~flags::kHasDepth;
+  }
+  Navigator nav(parse_parameters(params));
+  std::vector<Estimate> rows;
+  for (const Sample& s : samples) nav.push(s, rows);
+  nav.flush(rows);
+  if (counters != nullptr) *counters = nav.counters();
+
+  RunMetrics m;
+  m.rows = rows.size();
+  m.drilled_m = simulator.trajectory().drilled_length_m();
+  const double rate = scenario.sample_rate_hz;
+  for (const Estimate& e : rows) {
+    if (!e.valid || !e.navigation) continue;
+    ++m.valid_rows;
+    const auto k = static_cast<std::size_t>(std::llround(e.t_end * rate));
+    const TruthSample& tr = truth[std::min(k, truth.size() - 1)];
+    const double di = e.inclination_deg - tr.inclination_deg;
+    const double da = wrap_deg_180(e.azimuth_deg - tr.azimuth_deg);
+    const double dt = wrap_deg_180(e.gravity_toolface_deg - tr.toolface_deg);
+    m.max_inc_err_deg = std::max(m.max_inc_err_deg, std::abs(di));
+    if (e.azimuth_valid) m.max_azi_err_deg = std::max(m.max_azi_err_deg, std::abs(da));
+    if (e.toolface_valid) m.max_tf_err_deg = std::max(m.max_tf_err_deg, std::abs(dt));
+    int angle = 0;
+    for (auto [err, sd] : {std::pair{di, e.inclination_sd_deg}, std::pair{da, e.azimuth_sd_deg},
+                           std::pair{dt, e.toolface_sd_deg}}) {
+      ++angle;
+      if (sd > 0) {
+        const double z = err / sd;
+        m.sum_z2_angle[angle - 1] += z * z;
+        m.n_z_angle[angle - 1] += 1;
+        m.sum_z2 += z * z;
+        m.n_z += 1;
+        if (std::abs(z) > 3) m.count_z_above_3 += 1;
+      }
+    }
+    const auto& p = e.navigation->position_m;
+    m.end_position_err_m = std::hypot(p[0] - tr.north_m, p[1] - tr.east_m, p[2] - tr.down_m);
+    m.end_azi_err_deg = da;
+    m.end_azi_sd_deg = e.azimuth_sd_deg;
+  }
+  return m;
+}
+
+inline RunMetrics run_drilling(const sim::ImuGrade& grade, double rate_hz, std::uint64_t seed, bool use_depth = true) {
+  const auto scenario = sim::DrillingScenario::reference(grade, rate_hz, seed);
+  return run_drilling(scenario, parameters_for(scenario), use_depth);
+}
+
+inline void print(const char* label, const RunMetrics& m) {
+  auto rms = [&](int a) { return m.n_z_angle[a] > 0 ? std::sqrt(m.sum_z2_angle[a] / m.n_z_angle[a]) : 0.0; };
+  std::printf("%-28s rows %zu/%zu  max err I %.3f A %.3f T %.3f deg  end pos %.3f m (%.2f %% of %.1f m)  RMS(z) %.2f (I %.2f A %.2f T %.2f)\n",
+              label, m.valid_rows, m.rows, m.max_inc_err_deg, m.max_azi_err_deg, m.max_tf_err_deg,
+              m.end_position_err_m, m.end_position_pct(), m.drilled_m, m.rms_z(), rms(0), rms(1), rms(2));
+}
+
+}  // namespace plumb::strapdown::test

@@ -1,0 +1,138 @@
+// Mechanization and error-model physics against exact solutions.
+#include <cmath>
+#include <cstdio>
+
+#include <gtest/gtest.h>
+
+#include "plumb/strapdown/error_state_filter.hpp"
+#include "plumb/strapdown/mechanization.hpp"
+#include "plumb/strapdown/rotation.hpp"
+#include "strapdown_test_support.hpp"
+
+namespace plumb::strapdown::test {
+namespace {
+
+// A constant rate about a fixed axis with no earth rate: the exact attitude is exp(t [w x]).
+// At 10 Hz and 120 rpm a step turns 1.26 rad; the sub-stepped Runge-Kutta must still be exact to
+// the truncation bound (angle/2)^5/120 per sub-step, and uneven steps change nothing.
+TEST(Mechanization, ConstantRotationMatchesExactSolution) {
+  const Eigen::Vector3d w = Eigen::Vector3d(0.3, -0.2, 1.0).normalized() * (120.0 * 2 * kPi / 60.0);
+  Mechanization mech(Eigen::Vector3d::Zero(), 9.8);
+  for (const double rate : {10.0, 100.0}) {
+    NavState x;
+    double t = 0;
+    int k = 0;
+    while (t < 60.0) {
+      const double dt = (k++ % 3 == 0 ? 1.5 : 0.75) / rate;  // uneven steps
+      const ImuReading a{t, Eigen::Vector3d(0, 0, -9.8), w};
+      const ImuReading b{t + dt, Eigen::Vector3d(0, 0, -9.8), w};
+      mech.step(x, a, b);
+      t += dt;
+    }
+    const Eigen::Quaterniond exact = quaternion_from_rotation_vector(w * t);
+    const double err = Eigen::AngleAxisd(x.q * exact.inverse()).angle();
+    // RK4 on q' = q (0, w)/2 keeps exp(i x), x = half the sub-step angle, to x^4: the phase error is
+    // x^5/120 per sub-step, twice that in rotation angle. At most kMaxSubstepAngle per sub-step.
+    const double x_max = Mechanization::kMaxSubstepAngle / 2;
+    const double substeps = w.norm() * t / Mechanization::kMaxSubstepAngle + 3.0 * t * rate;
+    const double bound = substeps * 2.0 * std::pow(x_max, 5) / 120.0;
+    EXPECT_LT(err, bound) << "rate " << rate << " Hz";
+    std::printf("constant rotation, %.0f Hz, %.0f rad turned: error %.2e rad (bound %.2e)\n", rate, w.norm() * t, err, bound);
+    EXPECT_NEAR(x.q.norm(), 1.0, 1e-12);
+  }
+}
+
+// A rotation that speeds up about a fixed axis, w(t) = w' t (a rotary start): the exact angle is
+// w' t^2 / 2. Instantaneous samples joined by straight lines lose dt^2 w'' / 12 per unit time of
+// the rate's curvature; here the rate is linear, so both interpolations are exact up to Runge-Kutta
+// truncation, and for a curved rate (w = c t^2) the parabola keeps the error at round-off level
+// while a line would leave dt^2 c / 6 per second.
+TEST(Mechanization, AcceleratingRotationMatchesExactSolution) {
+  const Eigen::Vector3d axis = Eigen::Vector3d(0.1, 0.2, 1.0).normalized();
+  const double c = 0.05;  // rad/s^3: w = c t^2, angle = c t^3 / 3
+  Mechanization mech(Eigen::Vector3d::Zero(), 9.8);
+  const double rate = 10, t_end = 10;
+  NavState x;
+  std::vector<ImuReading> r;
+  for (int k = 0; k <= static_cast<int>(t_end * rate); ++k) {
+    const double t = k / rate;
+    r.push_back({t, Eigen::Vector3d(0, 0, -9.8), axis * c * t * t});
+  }
+  for (std::size_t k = 1; k < r.size(); ++k) mech.step(x, r[k - 1], r[k], nullptr, k >= 2 ? &r[k - 2] : nullptr);
+  const Eigen::Quaterniond exact = quaternion_from_rotation_vector(axis * c * t_end * t_end * t_end / 3.0);
+  const double err = Eigen::AngleAxisd(x.q * exact.inverse()).angle();
+  const double linear_error = c / 6.0 * t_end / (rate * rate);  // what straight lines would leave
+  std::printf("accelerating rotation at 10 Hz: error %.2e rad (straight lines: %.2e)\n", err, linear_error);
+  // Only the first step, which has no earlier reading, is a straight line: it leaves c dt^3 / 6.
+  const double first_step = c / (6.0 * rate * rate * rate);
+  EXPECT_LT(err, 1.05 * first_step);
+  EXPECT_LT(err, 0.02 * linear_error);
+}
+
+// A still tool whose gyros see exactly the earth rate keeps its attitude for an hour, and its
+// velocity stays at zero (gravity and the accelerometers cancel).
+TEST(Mechanization, StillToolOnRotatingEarthKeepsAttitude) {
+  StillTool tool;
+  tool.rate_hz = 50;
+  tool.duration_s = 3600;
+  tool.magnetometer = false;
+  const auto samples = tool.samples();
+  Mechanization mech(earth_rate_ned(tool.latitude_deg * kDeg), tool.g);
+  NavState x;
+  x.q = Eigen::Quaterniond(tool.c_nb().transpose());
+  for (std::size_t k = 1; k < samples.size(); ++k) {
+    mech.step(x, {samples[k - 1].t, samples[k - 1].f, samples[k - 1].w}, {samples[k].t, samples[k].f, samples[k].w});
+  }
+  EXPECT_LT(attitude_error(x.q, tool.c_nb()).norm(), 1e-9);
+  EXPECT_LT(x.v.norm(), 1e-6);
+}
+
+// Without updates, a constant gyro bias b turns the attitude at C b: after t the error is
+// |b| t (the earth rate's coupling -w_ie x phi adds a relative (Omega t)^2 / 2 = 1e-3 over 10 min).
+TEST(Mechanization, DriftFollowsGyroBias) {
+  StillTool tool;
+  tool.rate_hz = 100;
+  tool.duration_s = 600;
+  tool.magnetometer = false;
+  tool.gyro_bias = Eigen::Vector3d(1.0, -2.0, 0.5) * kDeg / 3600.0;  // deg/h
+  const auto samples = tool.samples();
+  Mechanization mech(earth_rate_ned(tool.latitude_deg * kDeg), tool.g);
+  NavState x;
+  x.q = Eigen::Quaterniond(tool.c_nb().transpose());
+  for (std::size_t k = 1; k < samples.size(); ++k) {
+    mech.step(x, {samples[k - 1].t, samples[k - 1].f, samples[k - 1].w}, {samples[k].t, samples[k].f, samples[k].w});
+  }
+  const double t = samples.back().t;
+  const Eigen::Vector3d predicted = tool.c_nb().transpose() * tool.gyro_bias * t;
+  const Eigen::Vector3d actual = attitude_error(x.q, tool.c_nb());
+  EXPECT_LT((actual - predicted).norm(), 0.01 * predicted.norm());
+}
+
+// The filter's model of the same: with no measurement the attitude variance grows as
+// sigma_b^2 t^2 + ARW^2 t (per axis, bias on every axis), which the transition must reproduce.
+TEST(ErrorStateFilter, AttitudeVarianceGrowsAsGyroModelSays) {
+  const double sigma_b = 1.0 * kDeg / 3600.0, arw = 0.05 * kDeg / 60.0;
+  StateMatrix p0 = StateMatrix::Zero();
+  p0.block<3, 3>(index::kGyroBias, index::kGyroBias).diagonal().setConstant(sigma_b * sigma_b);
+  ErrorStateFilter kf;
+  kf.reset(p0);
+  ProcessNoise noise;
+  noise.gyro_arw = arw;
+  StepIntegrals step;
+  const double dt = 0.05;
+  const Eigen::Matrix3d c = c_nb(1.0, 0.5, 0.2).transpose();
+  const double t_end = 600;
+  for (double t = 0; t < t_end - 1e-9; t += dt) {
+    step.clear();
+    step.dt = dt;
+    step.c_bn = c * dt;
+    step.f_n = Eigen::Vector3d(0, 0, -9.8) * dt;
+    const StateMatrix phi = ErrorStateFilter::transition(step, Eigen::Vector3d::Zero());
+    kf.predict(phi, ErrorStateFilter::process_noise(phi, dt, noise));
+  }
+  const double expected = sigma_b * sigma_b * t_end * t_end + arw * arw * t_end;
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(kf.covariance()(i, i), expected, 0.01 * expected);
+}
+
+}  // namespace
+}  // namespace plumb::strapdown::test
