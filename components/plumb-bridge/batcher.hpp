@@ -7,7 +7,7 @@
 
 #include "plumb/core/sample.hpp"
 
-namespace plumb::bridge {
+namespace plumb::bridge_component {
 
 class Batcher {
  public:
@@ -37,4 +37,4 @@ class Batcher {
   Clock::time_point first_at_{};
 };
 
-}  // namespace plumb::bridge
+}  // namespace plumb::bridge_component

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-namespace plumb::bridge {
+namespace plumb::bridge_component {
 
 namespace {
 std::string id_of(const CalibrationModel& m) { return m.calibration_id.empty() ? "unnamed" : m.calibration_id; }
@@ -80,4 +80,4 @@ std::string GravityCheck::reason() const {
   return out.str();
 }
 
-}  // namespace plumb::bridge
+}  // namespace plumb::bridge_component

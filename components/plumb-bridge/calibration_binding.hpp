@@ -10,7 +10,7 @@
 #include "plumb/core/calibration_model.hpp"
 #include "plumb/core/sample.hpp"
 
-namespace plumb::bridge {
+namespace plumb::bridge_component {
 
 struct BindingRule {
   std::string tool_id;          // the bridge's own tool id (never empty)
@@ -58,4 +58,4 @@ class GravityCheck {
   double measured_ = 0;
 };
 
-}  // namespace plumb::bridge
+}  // namespace plumb::bridge_component

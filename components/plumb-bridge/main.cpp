@@ -15,12 +15,13 @@
 #include "plumb/bridge/device_source.hpp"
 #include "plumb/bridge/replay_source.hpp"
 #include "plumb/bridge/sample_checker.hpp"
+#include "plumb/csv/coefficients_file.hpp"
 #include "plumb/components/cli.hpp"
 #include "plumb/components/import_options.hpp"
 #include "plumb/transport/topic_names.hpp"
 #include "publisher.hpp"
 
-namespace plumb::bridge {
+namespace plumb::bridge_component {
 namespace {
 
 constexpr const char* kProgram = "plumb-bridge";
@@ -40,7 +41,7 @@ struct Options {
   PublisherOptions publish{transport::topic_names::kSensorRaw, transport::topic_names::kSensorCalibrated,
                            transport::topic_names::kCalibration, transport::topic_names::kStatus,
                            BindingRule{"board"}};
-  Limits limits;
+  bridge::Limits limits;
   double status_period_s = 1.0;
   double backoff_min_s = 0.1;
   double backoff_max_s = 5.0;
@@ -121,7 +122,7 @@ std::string seconds_text(double s) {
 
 void log(const std::string& line) { std::cout << kProgram << ": " << line << std::endl; }
 
-std::string summary(const Counters& c) {
+std::string summary(const bridge::Counters& c) {
   std::ostringstream out;
   bool first = true;
   for (const auto& [name, value] : c.named()) {
@@ -142,7 +143,7 @@ int run(const Options& o) {
   if (!o.device.empty() && !csv::is_default(import))
     throw std::invalid_argument("--column, --units and --axes apply to --replay files, not to --device");
 
-  Counters counters;
+  bridge::Counters counters;
   int logged_errors = 0;
   auto log_bad_input = [&](const std::string& what) {
     if (logged_errors < o.max_logged_errors) std::cerr << kProgram << ": " << what << std::endl;
@@ -150,36 +151,36 @@ int run(const Options& o) {
       std::cerr << kProgram << ": further bad rows are counted (csv_errors) but not printed" << std::endl;
   };
 
-  SampleChecker checker(counters, o.limits);
-  std::unique_ptr<SampleSource> source;
+  bridge::SampleChecker checker(counters, o.limits);
+  std::unique_ptr<bridge::SampleSource> source;
   if (!o.replay.empty()) {
     const double speed = components::parse_rate_option(o.rate);
-    source = std::make_unique<ReplaySource>(
+    source = std::make_unique<bridge::ReplaySource>(
         o.replay, speed, counters, o.strict,
         [&](const csv::Error& e) { log_bad_input(std::string(e.what()) + " (row skipped)"); }, import,
         [](const std::string& warning) { std::cerr << kProgram << ": warning: " << warning << std::endl; });
   } else {
-    SerialOptions serial;
+    bridge::SerialOptions serial;
     serial.path = o.device;
     serial.baud = o.baud;
     serial.backoff_min = std::chrono::milliseconds(std::llround(o.backoff_min_s * 1000));
     serial.backoff_max = std::chrono::milliseconds(std::llround(o.backoff_max_s * 1000));
-    source = std::make_unique<DeviceSource>(serial, *parse_mode(o.mode), counters,
-                                            [&](SerialPort::Event e, const std::string& what) {
-                                              if (e == SerialPort::Event::Opened) log("opened " + what);
-                                              if (e == SerialPort::Event::Closed) {
-                                                log("device lost (" + what + "); reopening with back-off");
-                                                checker.new_stream();
-                                              }
-                                              if (e == SerialPort::Event::OpenFailed)
-                                                log(what + "; retrying with back-off (" + seconds_text(o.backoff_min_s) + " s .. " +
-                                                    seconds_text(o.backoff_max_s) + " s), reported again at attempts 2, 4, 8...");
-                                            });
+    const auto on_event = [&](bridge::SerialPort::Event e, const std::string& what) {
+      if (e == bridge::SerialPort::Event::Opened) log("opened " + what);
+      if (e == bridge::SerialPort::Event::Closed) {
+        log("device lost (" + what + "); reopening with back-off");
+        checker.new_stream();
+      }
+      if (e == bridge::SerialPort::Event::OpenFailed)
+        log(what + "; retrying with back-off (" + seconds_text(o.backoff_min_s) + " s .. " +
+            seconds_text(o.backoff_max_s) + " s), reported again at attempts 2, 4, 8...");
+    };
+    source = std::make_unique<bridge::DeviceSource>(serial, *bridge::parse_mode(o.mode), counters, on_event);
   }
 
   CalibrationModel file_model;
   if (!o.calibration_file.empty()) {
-    file_model = read_calibration_file(o.calibration_file);
+    file_model = csv::read_calibration_file(o.calibration_file);
     // Refused before anything starts: a bridge that would publish raw data only is not what was asked.
     if (const auto problem = binding_problem(file_model, o.publish.binding); !problem.empty())
       throw std::invalid_argument(o.calibration_file + ": " + problem);
@@ -285,10 +286,10 @@ int run(const Options& o) {
 }
 
 }  // namespace
-}  // namespace plumb::bridge
+}  // namespace plumb::bridge_component
 
 int main(int argc, char** argv) {
-  using namespace plumb::bridge;
+  using namespace plumb::bridge_component;
   CLI::App app{"plumb-bridge: reads the sensor board (serial device, docs/protocol.md) or replays a sensor CSV, "
                "checks every sample, and publishes raw and calibrated sensor batches and its status over DDS"};
   app.name(kProgram);

@@ -3,7 +3,7 @@
 #include "plumb/components/calibration_convert.hpp"
 #include "plumb/components/convert.hpp"
 
-namespace plumb::bridge {
+namespace plumb::bridge_component {
 using components::calibration_problem;
 using components::to_model;
 namespace {
@@ -15,7 +15,7 @@ transport::Qos sensor_qos(bool reliable) {
 }
 }  // namespace
 
-Publisher::Publisher(transport::Participant& participant, const PublisherOptions& options, Counters& counters, Log log)
+Publisher::Publisher(transport::Participant& participant, const PublisherOptions& options, bridge::Counters& counters, Log log)
     : options_(options),
       c_(counters),
       log_(std::move(log)),
@@ -127,4 +127,4 @@ void Publisher::publish_status(const std::string& state, const std::string& last
 
 std::size_t Publisher::sensor_readers() const { return raw_.matched_readers() + calibrated_.matched_readers(); }
 
-}  // namespace plumb::bridge
+}  // namespace plumb::bridge_component

@@ -13,7 +13,7 @@
 #include "plumb/core/calibration_model.hpp"
 #include "plumb/transport/transport.hpp"
 
-namespace plumb::bridge {
+namespace plumb::bridge_component {
 
 struct PublisherOptions {
   std::string raw_topic;
@@ -29,7 +29,7 @@ struct PublisherOptions {
 class Publisher {
  public:
   using Log = std::function<void(const std::string&)>;
-  Publisher(transport::Participant& participant, const PublisherOptions& options, Counters& counters, Log log);
+  Publisher(transport::Participant& participant, const PublisherOptions& options, bridge::Counters& counters, Log log);
 
   // Applies `model` from now on (false, logged in one line, when its coefficients are unusable or
   // bound to another tool or other units: docs/calibration.md "Binding").
@@ -51,7 +51,7 @@ class Publisher {
 
  private:
   PublisherOptions options_;
-  Counters& c_;
+  bridge::Counters& c_;
   Log log_;
   transport::Writer<topics::SensorBatch> raw_;
   transport::Writer<topics::SensorBatch> calibrated_;
@@ -64,4 +64,4 @@ class Publisher {
   std::vector<topics::SensorBatch> held_;  // calibrated batches waiting for the first verdict
 };
 
-}  // namespace plumb::bridge
+}  // namespace plumb::bridge_component

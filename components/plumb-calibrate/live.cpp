@@ -11,11 +11,12 @@
 #include "plumb/calibration/triad_fit.hpp"
 #include "plumb/components/convert.hpp"
 #include "plumb/components/status_reporter.hpp"
+#include "plumb/components/topic_wait.hpp"
 #include "plumb/transport/topic_names.hpp"
 #include "procedure.hpp"
 #include "simulated_turntable.hpp"
 
-namespace plumb::calibrate {
+namespace plumb::calibrate_component {
 
 namespace {
 
@@ -169,6 +170,7 @@ int run_live(const Options& o) {
   auto reader = transport::make_reader<topics::SensorBatch>(*connection.participant, transport::topic_names::kSensorRaw,
                                                             transport::Qos::sensor_stream());
   components::StatusReporter status(*connection.participant, "plumb-calibrate");
+  components::SilenceNotes silence("plumb-calibrate", transport::topic_names::kSensorRaw);
   std::uint64_t received = 0, unusable = 0;
   std::atomic<int> requested{0}, refused{0};
   const auto counters = [&](int recorded) {
@@ -202,7 +204,9 @@ int run_live(const Options& o) {
                                std::to_string(index + 1) + " (" + plans[static_cast<std::size_t>(index)].orientation +
                                "); nothing published");
     reader.wait(std::chrono::milliseconds(100));
+    silence.check(*connection.participant, reader.matched_writers());
     while (index < total && reader.take(batch)) {
+      silence.received();
       for (const auto& m : batch.samples) {
         const Sample s = components::from_topic(m);
         ++received;
@@ -258,4 +262,4 @@ int run_live(const Options& o) {
   return code;
 }
 
-}  // namespace plumb::calibrate
+}  // namespace plumb::calibrate_component

@@ -3,8 +3,8 @@
 
 #include "options.hpp"
 
-namespace plumb::calibrate {
+namespace plumb::calibrate_component {
 
 int run_live(const Options& o);
 
-}  // namespace plumb::calibrate
+}  // namespace plumb::calibrate_component

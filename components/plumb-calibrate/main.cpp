@@ -10,7 +10,7 @@
 
 int main(int argc, char** argv) {
   using namespace plumb;
-  calibrate::Options o;
+  calibrate_component::Options o;
   CLI::App app{"plumb-calibrate: accelerometer and magnetometer calibration (6pos, 24pos, lsq, mag); "
                "writes a coefficients file and a report, publishes the coefficients on plumb/calibration"};
   components::add_transport_options(app, o.transport);
@@ -77,9 +77,9 @@ int main(int argc, char** argv) {
   }
   try {
     components::install_stop_handler();
-    if (!o.write_simulation.empty()) return calibrate::write_simulation(o);
-    if (o.live) return calibrate::run_live(o);
-    return calibrate::run_offline(o);
+    if (!o.write_simulation.empty()) return calibrate_component::write_simulation(o);
+    if (o.live) return calibrate_component::run_live(o);
+    return calibrate_component::run_offline(o);
   } catch (const std::exception& e) {
     return components::exit_on_error("plumb-calibrate", e);
   }

@@ -5,10 +5,11 @@
 
 #include "plumb/calibration/procedures.hpp"
 #include "plumb/calibration/station_list.hpp"
+#include "plumb/csv/coefficients_file.hpp"
 #include "plumb/csv/files.hpp"
 #include "procedure.hpp"
 
-namespace plumb::calibrate {
+namespace plumb::calibrate_component {
 
 int run_offline(const Options& o) {
   if (o.input.empty() || o.stations.empty())
@@ -50,7 +51,7 @@ std::vector<sim::StationPlan> plans_for(const Options& o) {
 sim::SensorPackage simulated_package(const Options& o) {
   auto pkg = sim::SensorPackage::typical(sim::AccelOutput::Voltage, o.sim_seed);
   if (!o.sim_truth.empty()) {
-    pkg.truth = read_calibration_file(o.sim_truth);
+    pkg.truth = csv::read_calibration_file(o.sim_truth);
     pkg.nominal = CalibrationModel{};
   }
   return pkg;
@@ -90,15 +91,15 @@ int write_simulation(const Options& o) {
   }
   {
     std::ofstream out(prefix + "truth.txt");
-    write_calibration(out, pkg.truth);
+    csv::write_calibration(out, pkg.truth);
   }
   {
     std::ofstream out(prefix + "nominal.txt");
-    write_calibration(out, pkg.nominal);
+    csv::write_calibration(out, pkg.nominal);
   }
   std::printf("wrote %ssensor.csv (%zu samples), %sstations.csv (%zu stations), %struth.txt, %snominal.txt\n",
               prefix.c_str(), rec.samples.size(), prefix.c_str(), stations.size(), prefix.c_str(), prefix.c_str());
   return 0;
 }
 
-}  // namespace plumb::calibrate
+}  // namespace plumb::calibrate_component

@@ -6,7 +6,7 @@
 #include "options.hpp"
 #include "plumb/sim/turntable.hpp"
 
-namespace plumb::calibrate {
+namespace plumb::calibrate_component {
 
 int run_offline(const Options& o);
 // Writes a simulated turntable recording for the procedure: <prefix>sensor.csv,
@@ -19,4 +19,4 @@ sim::SensorPackage simulated_package(const Options& o);
 // The station plans a procedure asks for (also the simulated operator's moves).
 std::vector<sim::StationPlan> plans_for(const Options& o);
 
-}  // namespace plumb::calibrate
+}  // namespace plumb::calibrate_component

@@ -5,7 +5,7 @@
 
 #include "plumb/components/cli.hpp"
 
-namespace plumb::calibrate {
+namespace plumb::calibrate_component {
 
 struct Options {
   std::string procedure = "6pos";   // 6pos | 24pos | lsq | mag
@@ -44,4 +44,4 @@ struct Options {
   components::TransportOptions transport;
 };
 
-}  // namespace plumb::calibrate
+}  // namespace plumb::calibrate_component

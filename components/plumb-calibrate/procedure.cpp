@@ -6,16 +6,17 @@
 #include <fstream>
 #include <thread>
 
-#include "plumb/components/calibration_convert.hpp"
 #include "plumb/calibration/report.hpp"
+#include "plumb/components/calibration_convert.hpp"
+#include "plumb/csv/coefficients_file.hpp"
 #include "plumb/transport/topic_names.hpp"
 
-namespace plumb::calibrate {
+namespace plumb::calibrate_component {
 
 namespace {
 
 CalibrationModel load_or_default(const std::string& path) {
-  return path.empty() ? CalibrationModel{} : read_calibration_file(path);
+  return path.empty() ? CalibrationModel{} : csv::read_calibration_file(path);
 }
 
 std::string default_id(const Options& o) {
@@ -95,7 +96,7 @@ int write_outputs(const Options& o, const calibration::Outcome& outcome) {
   const auto& r = *outcome.result;
   if (!o.output.empty()) {
     std::ofstream out(o.output);
-    write_calibration(out, r.model);
+    csv::write_calibration(out, r.model);
     if (!out) {
       std::fprintf(stderr, "plumb-calibrate: cannot write %s\n", o.output.c_str());
       return 1;
@@ -127,4 +128,4 @@ void publish_coefficients(const Options& o, const CalibrationModel& model) {
   components::sleep_while_running(o.linger_s);
 }
 
-}  // namespace plumb::calibrate
+}  // namespace plumb::calibrate_component

@@ -8,7 +8,7 @@
 #include "plumb/calibration/types.hpp"
 #include "plumb/core/sample.hpp"
 
-namespace plumb::calibrate {
+namespace plumb::calibrate_component {
 
 calibration::Outcome run_procedure(const Options& o, const std::vector<Sample>& samples,
                                    const std::vector<calibration::Station>& stations);
@@ -21,4 +21,4 @@ int write_outputs(const Options& o, const calibration::Outcome& outcome);
 // linger_s seconds so late joiners get them. Only ever called with a successful outcome.
 void publish_coefficients(const Options& o, const CalibrationModel& model);
 
-}  // namespace plumb::calibrate
+}  // namespace plumb::calibrate_component

@@ -6,7 +6,7 @@
 #include "plumb/components/convert.hpp"
 #include "plumb/transport/topic_names.hpp"
 
-namespace plumb::calibrate {
+namespace plumb::calibrate_component {
 
 SimulatedTurntable::SimulatedTurntable(const Options& o, std::vector<sim::StationPlan> plans,
                                        const std::atomic<int>& requested, const std::atomic<int>& refused)
@@ -56,4 +56,4 @@ void SimulatedTurntable::run() {
   }
 }
 
-}  // namespace plumb::calibrate
+}  // namespace plumb::calibrate_component

@@ -12,7 +12,7 @@
 #include "options.hpp"
 #include "plumb/sim/turntable.hpp"
 
-namespace plumb::calibrate {
+namespace plumb::calibrate_component {
 
 class SimulatedTurntable {
  public:
@@ -33,4 +33,4 @@ class SimulatedTurntable {
   std::thread thread_;
 };
 
-}  // namespace plumb::calibrate
+}  // namespace plumb::calibrate_component

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace plumb::components {
+namespace plumb::estimator_component {
 
 namespace {
 
@@ -56,4 +56,4 @@ std::string estimate_line(const Estimate& e, const std::optional<topics::Truth>&
   return line;
 }
 
-}  // namespace plumb::components
+}  // namespace plumb::estimator_component

@@ -9,7 +9,7 @@
 #include "plumb/core/estimate.hpp"
 #include "plumb/topics/all.hpp"
 
-namespace plumb::components {
+namespace plumb::estimator_component {
 
 // `degrees` wrapped into [0, 360) after rounding to `decimals`, so that 359.9996 prints 0.000, not 360.000.
 std::string format_angle(double degrees, int decimals);
@@ -17,4 +17,4 @@ std::string format_angle(double degrees, int decimals);
 // One line, no newline. `truth`: the simulator's truth at the window's end, if known.
 std::string estimate_line(const Estimate& e, const std::optional<topics::Truth>& truth);
 
-}  // namespace plumb::components
+}  // namespace plumb::estimator_component

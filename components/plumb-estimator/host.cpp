@@ -18,7 +18,7 @@
 #include "subscription.hpp"
 #include "truth_lookup.hpp"
 
-namespace plumb::components {
+namespace plumb::estimator_component {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -63,14 +63,14 @@ int run_host(const HostOptions& o) {
   };
   estimator::Runner first_runner = make_runner();
   std::map<std::string, estimator::Runner> runners;  // tool id -> its runner
-  auto conn = connect(o.transport, "plumb-estimator");
+  auto conn = components::connect(o.transport, "plumb-estimator");
   EstimatePublication publication(*conn.participant);
   for (const auto& slot : first_runner.slots()) publication.add(slot.name, slot.estimator->info().uses_gyro);
   SensorSubscription input(*conn.participant, {o.input_topic, o.tool_id, o.reliable});
-  StatusReporter status(*conn.participant, "plumb-estimator");
+  components::StatusReporter status(*conn.participant, "plumb-estimator");
   std::unique_ptr<TruthLookup> truth;
   if (o.compare_truth) truth = std::make_unique<TruthLookup>(*conn.participant, o.truth_topic);
-  install_stop_handler();
+  components::install_stop_handler();
 
   std::cerr << "plumb-estimator: " << conn.transport->name() << ", reading " << o.input_topic
             << (o.tool_id.empty() ? " (each tool separately)" : " (tool '" + o.tool_id + "' only)") << ", plugins:";
@@ -91,7 +91,7 @@ int run_host(const HostOptions& o) {
     };
   };
   const auto counters = [&] {
-    CounterList all = input.counters();
+    components::CounterList all = input.counters();
     // Summed over the tools, in the plugins' order: the per-plugin counters keep their names.
     const std::size_t own = all.size();
     if (runners.empty())
@@ -120,10 +120,10 @@ int run_host(const HostOptions& o) {
   bool checked_gyro = false;
   SensorSubscription::ToolChunks chunks;
   status.publish("running", counters());
-  while (!g_stop && !enough()) {
+  while (!components::g_stop && !enough()) {
     if (o.timeout_s > 0 && seconds_since(t0) > o.timeout_s) {
       status.publish("failed", counters(), "timed out");
-      print_error("plumb-estimator", "timed out before " + std::to_string(o.max_estimates) + " estimates per plugin");
+      components::print_error("plumb-estimator", "timed out before " + std::to_string(o.max_estimates) + " estimates per plugin");
       return 1;
     }
     input.wait(std::chrono::milliseconds(100));
@@ -168,12 +168,12 @@ int run_host(const HostOptions& o) {
   std::cerr << std::endl;
   if (input.samples() == 0) {
     // Stopped having received nothing: not a success, and the silence notes above said why.
-    print_error("plumb-estimator", "no sample received on " + o.input_topic + " (" +
+    components::print_error("plumb-estimator", "no sample received on " + o.input_topic + " (" +
                                        std::to_string(input.matched_writers()) + " writer(s) matched)");
     return 1;
   }
-  if (enough()) sleep_while_running(o.linger_s);
+  if (enough()) components::sleep_while_running(o.linger_s);
   return 0;
 }
 
-}  // namespace plumb::components
+}  // namespace plumb::estimator_component

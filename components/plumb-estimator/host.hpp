@@ -8,10 +8,10 @@
 #include "plumb/transport/topic_names.hpp"
 #include "plumb/transport/transport.hpp"
 
-namespace plumb::components {
+namespace plumb::estimator_component {
 
 struct HostOptions {
-  TransportOptions transport;
+  components::TransportOptions transport;
   std::vector<std::string> plugins;
   std::string input_topic = transport::topic_names::kSensorCalibrated;
   double window_s = 10;
@@ -29,4 +29,4 @@ struct HostOptions {
 
 int run_host(const HostOptions& options);
 
-}  // namespace plumb::components
+}  // namespace plumb::estimator_component

@@ -12,7 +12,7 @@
 
 int main(int argc, char** argv) {
   using namespace plumb;
-  components::HostOptions o;
+  estimator_component::HostOptions o;
   CLI::App app{"plumb-estimator: run estimator plugins side by side on a sensor topic; publish plumb/attitude/<plugin>"};
   components::add_transport_options(app, o.transport);
   app.add_option("-p,--plugin,--estimator", o.plugins, "estimator plugin (repeat for several; see `plumb plugins`; --estimator, as for plumb estimate, is the same)")->required();
@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
   app.name("plumb-estimator");
   if (const int status = components::parse_command_line(app, argc, argv); status >= 0) return status;
   try {
-    return components::run_host(o);
+    return estimator_component::run_host(o);
   } catch (const std::exception& e) {
     return components::exit_on_error("plumb-estimator", e);
   }

@@ -3,7 +3,7 @@
 #include "plumb/components/convert.hpp"
 #include "plumb/transport/topic_names.hpp"
 
-namespace plumb::components {
+namespace plumb::estimator_component {
 
 void EstimatePublication::add(const std::string& plugin, bool navigator) {
   attitude_.emplace(plugin, transport::make_writer<topics::Attitude>(
@@ -17,8 +17,8 @@ void EstimatePublication::add(const std::string& plugin, bool navigator) {
 
 void EstimatePublication::publish(const Estimate& e, const std::string& tool_id) {
   const std::string tool = tool_id.empty() ? "unknown" : tool_id;
-  attitude_.at(e.estimator).write(to_topic(e, tool));
-  if (const auto nav = navigation_.find(e.estimator); nav != navigation_.end()) nav->second.write(to_navigation(e, tool));
+  attitude_.at(e.estimator).write(components::to_topic(e, tool));
+  if (const auto nav = navigation_.find(e.estimator); nav != navigation_.end()) nav->second.write(components::to_navigation(e, tool));
 }
 
-}  // namespace plumb::components
+}  // namespace plumb::estimator_component

@@ -8,7 +8,7 @@
 #include "plumb/core/estimate.hpp"
 #include "plumb/transport/transport.hpp"
 
-namespace plumb::components {
+namespace plumb::estimator_component {
 
 class EstimatePublication {
  public:
@@ -23,4 +23,4 @@ class EstimatePublication {
   std::map<std::string, transport::Writer<topics::Navigation>> navigation_;
 };
 
-}  // namespace plumb::components
+}  // namespace plumb::estimator_component

@@ -4,7 +4,7 @@
 
 #include "plumb/components/convert.hpp"
 
-namespace plumb::components {
+namespace plumb::estimator_component {
 
 SensorSubscription::SensorSubscription(transport::Participant& participant, const SubscriptionOptions& options)
     : reader_(transport::make_reader<topics::SensorBatch>(
@@ -48,7 +48,7 @@ bool SensorSubscription::route(const topics::SensorBatch& batch, ToolChunks& out
   auto& chunk = out[batch.tool_id];
   for (const auto& m : batch.samples) {
     account->account(m.seq);
-    chunk.push_back(from_topic(m));
+    chunk.push_back(components::from_topic(m));
     if (depth != depth_m_.end()) {
       chunk.back().depth_m = depth->second;
       chunk.back().flags |= flags::kHasDepth;
@@ -81,7 +81,7 @@ bool SensorSubscription::take(ToolChunks& out) {
   return any;
 }
 
-CounterList SensorSubscription::counters() const {
+components::CounterList SensorSubscription::counters() const {
   return {{"batches", batches_},
           {"samples", samples_},
           {"tools", streams_.streams().size()},
@@ -93,4 +93,4 @@ CounterList SensorSubscription::counters() const {
           {"uncalibrated_samples", uncalibrated_samples_}};
 }
 
-}  // namespace plumb::components
+}  // namespace plumb::estimator_component

@@ -14,7 +14,7 @@
 #include "plumb/transport/transport.hpp"
 #include "tool_streams.hpp"
 
-namespace plumb::components {
+namespace plumb::estimator_component {
 
 struct SubscriptionOptions {
   std::string topic;
@@ -32,7 +32,7 @@ class SensorSubscription {
   std::size_t matched_writers() const { return reader_.matched_writers(); }
   // After a pause: the next sequence number is not expected to follow the last one.
   void restart_sequence() { streams_.restart_all(); }
-  CounterList counters() const;
+  components::CounterList counters() const;
   std::uint64_t samples() const { return samples_; }
   std::uint64_t lost_samples() const { return streams_.lost(); }
   std::size_t tools() const { return streams_.streams().size(); }
@@ -56,4 +56,4 @@ class SensorSubscription {
   std::uint64_t uncalibrated_samples_ = 0;
 };
 
-}  // namespace plumb::components
+}  // namespace plumb::estimator_component

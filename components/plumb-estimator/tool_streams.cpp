@@ -1,6 +1,6 @@
 #include "tool_streams.hpp"
 
-namespace plumb::components {
+namespace plumb::estimator_component {
 
 void SequenceAccount::account(std::uint64_t seq) {
   if (have_seq && seq != next_seq) {
@@ -45,4 +45,4 @@ std::uint64_t ToolStreams::backwards() const {
   return n;
 }
 
-}  // namespace plumb::components
+}  // namespace plumb::estimator_component

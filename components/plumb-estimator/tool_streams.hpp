@@ -8,7 +8,7 @@
 #include <map>
 #include <string>
 
-namespace plumb::components {
+namespace plumb::estimator_component {
 
 // The sequence numbers of one tool's samples: gaps (and the samples they lost) and steps back.
 struct SequenceAccount {
@@ -41,4 +41,4 @@ class ToolStreams {
   std::uint64_t other_tool_batches_ = 0;
 };
 
-}  // namespace plumb::components
+}  // namespace plumb::estimator_component

@@ -4,7 +4,7 @@
 
 #include "plumb/transport/topic_names.hpp"
 
-namespace plumb::components {
+namespace plumb::estimator_component {
 
 TruthLookup::TruthLookup(transport::Participant& participant, const std::string& topic)
     : reader_(transport::make_reader<topics::Truth>(participant, topic, transport::default_qos_for_topic(topic))) {}
@@ -27,4 +27,4 @@ std::optional<topics::Truth> TruthLookup::at(double t_s) const {
   return *best;
 }
 
-}  // namespace plumb::components
+}  // namespace plumb::estimator_component

@@ -8,7 +8,7 @@
 #include "plumb/topics/all.hpp"
 #include "plumb/transport/transport.hpp"
 
-namespace plumb::components {
+namespace plumb::estimator_component {
 
 class TruthLookup {
  public:
@@ -23,4 +23,4 @@ class TruthLookup {
   std::deque<topics::Truth> recent_;  // newest last; a few minutes at plumb-sim's batch rate
 };
 
-}  // namespace plumb::components
+}  // namespace plumb::estimator_component

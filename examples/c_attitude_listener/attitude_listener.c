@@ -172,6 +172,9 @@ int main(int argc, char** argv) {
   const dds_time_t deadline = timeout_s > 0 ? dds_time() + DDS_SECS(timeout_s) : DDS_NEVER;
   long received = 0;
   int status = 0;
+  /* While nothing arrives, say so after 3, 6, 12... s: a silent wait looks like a hang. */
+  dds_time_t last_message = dds_time();
+  dds_duration_t next_note = DDS_SECS(3);
   while (!stop_requested && (count == 0 || received < count)) {
     if (dds_time() >= deadline) {
       fprintf(stderr, "plumb-c-attitude-listener: %ld of %ld messages after %ld s, giving up\n", received, count, timeout_s);
@@ -186,12 +189,21 @@ int main(int argc, char** argv) {
       dds_sample_info_t infos[16];
       const dds_return_t n = dds_take(reader, samples, infos, 16, 16);
       if (n <= 0) break;
+      last_message = dds_time();
+      next_note = DDS_SECS(3);
       for (dds_return_t i = 0; i < n && (count == 0 || received < count); ++i) {
         if (!infos[i].valid_data) continue;
         print_attitude((const plumb_msg_Attitude*)samples[i]);
         ++received;
       }
       dds_return_loan(reader, samples, n);
+    }
+    if (dds_time() - last_message >= next_note) {
+      dds_subscription_matched_status_t matched;
+      dds_get_subscription_matched_status(reader, &matched);
+      fprintf(stderr, "plumb-c-attitude-listener: nothing on %s for %lld s (%u writer(s) matched; same domain?)\n",
+              topic_name, (long long)((dds_time() - last_message) / DDS_NSECS_IN_SEC), matched.current_count);
+      next_note *= 2;
     }
   }
   dds_delete(dom); /* deletes the participant and everything in it */

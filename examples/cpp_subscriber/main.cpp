@@ -60,13 +60,27 @@ int main(int argc, char** argv) {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
     int received = 0;
     plumb::topics::Attitude attitude;
+    // While nothing arrives, say so after 3, 6, 12... s: a silent wait looks like a hang.
+    auto last_message = std::chrono::steady_clock::now();
+    double next_note_s = 3;
     while (!stop_requested && (count == 0 || received < count)) {
       if (timeout_s > 0 && std::chrono::steady_clock::now() > deadline) {
         std::cerr << "plumb-example-subscriber: timed out after " << received << " message(s)" << std::endl;
         return 1;
       }
       // Short waits so that Ctrl-C and --timeout are noticed promptly.
-      if (!reader.wait(std::chrono::milliseconds(200))) continue;
+      if (!reader.wait(std::chrono::milliseconds(200))) {
+        const double silent_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_message).count();
+        if (silent_s >= next_note_s) {
+          next_note_s *= 2;
+          std::cerr << "plumb-example-subscriber: nothing on plumb/attitude/example for " << static_cast<int>(silent_s)
+                    << " s (" << reader.matched_writers() << " writer(s) matched; is plumb-example-publisher running"
+                    << " on the same --domain?)" << std::endl;
+        }
+        continue;
+      }
+      last_message = std::chrono::steady_clock::now();
+      next_note_s = 3;
       while ((count == 0 || received < count) && reader.take(attitude)) {
         ++received;
         std::cout << attitude.tool_id << " [" << attitude.estimator << "] inclination " << attitude.inclination_deg

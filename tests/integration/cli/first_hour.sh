@@ -68,6 +68,18 @@ timeout 60 "$bin/plumb" topic echo plumb/attitude/compensate --timeout 4 > /dev/
 grep -q "nothing on plumb/attitude/compensate for 3 s.*did you mean plumb/attitude/compensated?" "$work/typo.txt" &&
   pass "a typo in a plugin's topic: $(head -1 "$work/typo.txt")" || fail "typo in a plugin topic: $(cat "$work/typo.txt")"
 
+# Every listener says what it waits for while nothing comes (nothing is published yet here).
+timeout 60 "$bin/plumb-calibrate" --live --procedure 6pos --timeout 5 > /dev/null 2> "$work/cal_silent.txt"
+grep -q "plumb-calibrate: nothing on plumb/sensor/raw for 3 s (0 writer(s) matched)" "$work/cal_silent.txt" &&
+  pass "plumb-calibrate --live says it hears nothing: $(head -1 "$work/cal_silent.txt")" ||
+  fail "plumb-calibrate --live silent: $(cat "$work/cal_silent.txt")"
+timeout 60 "$bin/plumb-example-subscriber" --timeout 5 > /dev/null 2> "$work/ex_silent.txt"
+grep -q "nothing on plumb/attitude/example for 3 s (0 writer(s) matched" "$work/ex_silent.txt" &&
+  pass "the C++ example subscriber says it hears nothing" || fail "example subscriber silent: $(cat "$work/ex_silent.txt")"
+timeout 60 "$bin/plumb-c-attitude-listener" --count 1 --timeout 5 plumb/attitude/c > /dev/null 2> "$work/c_silent.txt"
+grep -q "nothing on plumb/attitude/c for 3 s (0 writer(s) matched" "$work/c_silent.txt" &&
+  pass "the C example listener says it hears nothing" || fail "C listener silent: $(cat "$work/c_silent.txt")"
+
 # --- Data for what follows: a simulated platform publishing plumb/sensor/raw until stopped.
 "$bin/plumb-sim" --inclination 1 --azimuth 359.9999 --rpm 60 --loop --wait-subscribers 0 > "$work/sim.txt" 2>&1 &
 pids+=($!)

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-namespace plumb::bridge {
+namespace plumb::bridge_component {
 namespace {
 
 using namespace std::chrono_literals;
@@ -27,4 +27,4 @@ TEST(Batcher, DueFiftyMillisecondsAfterTheOldestSample) {
 }
 
 }  // namespace
-}  // namespace plumb::bridge
+}  // namespace plumb::bridge_component

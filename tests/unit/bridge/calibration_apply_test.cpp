@@ -8,7 +8,7 @@
 #include "plumb/components/calibration_convert.hpp"
 #include "test_samples.hpp"
 
-namespace plumb::bridge {
+namespace plumb::bridge_component {
 using components::calibration_problem;
 using components::to_model;
 using components::to_topic;
@@ -56,7 +56,7 @@ TEST(CalibrationApply, InvertsTheLinearSensorModelAtTheReferenceTemperature) {
   model.magnetometer.bias = {1.5, -2.0, 0.7};
   model.magnetometer.sensitivity << 0.98, 0.01, 0, -0.01, 1.03, 0.02, 0, 0.005, 1.0;
   EXPECT_TRUE(calibration_problem(model).empty());
-  Sample truth = test::make_sample(3);
+  Sample truth = bridge::test::make_sample(3);
   truth.flags &= ~flags::kHasTemperature;
   Sample raw = truth;
   raw.f = model.accelerometer.sensitivity.inverse() * truth.f + model.accelerometer.bias;
@@ -73,7 +73,7 @@ TEST(CalibrationApply, TemperatureOutsideTheCalibratedRangeIsFlagged) {
   CalibrationModel model;
   model.temp_min_c = 0;
   model.temp_max_c = 100;
-  Sample s = test::make_sample(0);
+  Sample s = bridge::test::make_sample(0);
   s.temp_c = 120;
   model.apply(s);
   EXPECT_TRUE(s.flags & flags::kTemperatureOutOfRange);
@@ -89,4 +89,4 @@ TEST(CalibrationProblem, UnusableCoefficientsAreNamed) {
 }
 
 }  // namespace
-}  // namespace plumb::bridge
+}  // namespace plumb::bridge_component

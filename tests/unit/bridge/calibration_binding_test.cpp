@@ -7,7 +7,7 @@
 
 #include "calibration_binding.hpp"
 
-namespace plumb::bridge {
+namespace plumb::bridge_component {
 namespace {
 
 CalibrationModel coefficients(const std::string& tool, const std::string& accel_units = "",
@@ -119,4 +119,4 @@ TEST(GravityCheck, FinishJudgesAShortStream) {
 }
 
 }  // namespace
-}  // namespace plumb::bridge
+}  // namespace plumb::bridge_component

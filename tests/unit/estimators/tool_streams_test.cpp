@@ -6,7 +6,7 @@
 
 #include "tool_streams.hpp"
 
-namespace plumb::components {
+namespace plumb::estimator_component {
 namespace {
 
 void feed(ToolStreams& streams, const std::string& tool, std::uint64_t first, int n) {
@@ -59,4 +59,4 @@ TEST(ToolStreams, RestartForgetsTheExpectedNumber) {
 }
 
 }  // namespace
-}  // namespace plumb::components
+}  // namespace plumb::estimator_component

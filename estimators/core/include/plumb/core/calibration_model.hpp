@@ -14,7 +14,6 @@
 #pragma once
 
 #include <array>
-#include <iosfwd>
 #include <string>
 
 #include <Eigen/Core>
@@ -71,11 +70,5 @@ struct CalibrationModel {
   // flags::kTemperatureOutOfRange when T is outside [temp_min_c, temp_max_c].
   void apply(Sample& s) const;
 };
-
-// The coefficients text file (docs/calibration.md): "key value..." lines, '#' comments.
-// Throws std::runtime_error naming the line on a bad file.
-CalibrationModel read_calibration_file(const std::string& path);
-CalibrationModel parse_calibration(std::istream& in, const std::string& source_name);
-void write_calibration(std::ostream& out, const CalibrationModel& model);
 
 }  // namespace plumb

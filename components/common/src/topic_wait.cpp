@@ -1,4 +1,4 @@
-#include "topic_wait.hpp"
+#include "plumb/components/topic_wait.hpp"
 
 #include <algorithm>
 #include <iostream>
@@ -7,7 +7,7 @@
 #include "plumb/estimator/loader.hpp"
 #include "plumb/transport/topic_names.hpp"
 
-namespace plumb::cli {
+namespace plumb::components {
 
 namespace {
 
@@ -92,4 +92,4 @@ void SilenceNotes::check(transport::Participant& participant, std::size_t matche
   std::cerr << line << std::endl;
 }
 
-}  // namespace plumb::cli
+}  // namespace plumb::components

@@ -1,5 +1,6 @@
-// What `plumb topic echo|hz` say while nothing arrives, and the names they suggest for a typo:
-// a program that waits says what it waits for and what it does see, instead of waiting in silence.
+// What a listening program (`plumb topic echo|hz`, `plumb-calibrate --live`) says while nothing
+// arrives, and the names it suggests for a typo: a program that waits says what it waits for and what
+// it does see, instead of waiting in silence.
 #pragma once
 
 #include <chrono>
@@ -9,7 +10,7 @@
 
 #include "plumb/transport/transport.hpp"
 
-namespace plumb::cli {
+namespace plumb::components {
 
 // Up to three known topic names closest to `topic` (edit distance): the exact names of idl/, the
 // attitude and navigation topics of the installed estimator plugins, and the topics discovered.
@@ -35,4 +36,4 @@ class SilenceNotes {
   double next_note_s_ = 3;
 };
 
-}  // namespace plumb::cli
+}  // namespace plumb::components
