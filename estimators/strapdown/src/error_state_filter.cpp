@@ -28,13 +28,16 @@ StateMatrix ErrorStateFilter::transition(const StepIntegrals& in, const Eigen::V
 }
 
 StateMatrix ErrorStateFilter::process_noise(const StateMatrix& phi, double dt, const ProcessNoise& n) {
-  StateMatrix q = StateMatrix::Zero();
-  // The white noises enter through C (a rotation), and are the same on each axis: C q I C' = q I.
-  q.block<3, 3>(kAtt, kAtt).diagonal().setConstant(n.gyro_arw * n.gyro_arw * dt);
-  q.block<3, 3>(kVel, kVel).diagonal().setConstant(n.accel_vrw * n.accel_vrw * dt);
-  q.block<3, 3>(kGyroBias, kGyroBias).diagonal().setConstant(n.gyro_bias_walk * n.gyro_bias_walk * dt);
-  q.block<3, 3>(kAccelBias, kAccelBias).diagonal().setConstant(n.accel_bias_walk * n.accel_bias_walk * dt);
-  StateMatrix qd = 0.5 * (phi * q * phi.transpose() + q);
+  StateVector q = StateVector::Zero();
+  // The white noises enter through C (a rotation), and are the same on each axis: C q I C' = q I,
+  // so q is diagonal and phi q phi' is one matrix product.
+  q.segment<3>(kAtt).setConstant(n.gyro_arw * n.gyro_arw * dt);
+  q.segment<3>(kVel).setConstant(n.accel_vrw * n.accel_vrw * dt);
+  q.segment<3>(kGyroBias).setConstant(n.gyro_bias_walk * n.gyro_bias_walk * dt);
+  q.segment<3>(kAccelBias).setConstant(n.accel_bias_walk * n.accel_bias_walk * dt);
+  StateMatrix qd = (phi * q.asDiagonal()) * phi.transpose();
+  qd.diagonal() += q;
+  qd *= 0.5;
   return 0.5 * (qd + qd.transpose());
 }
 

@@ -8,6 +8,8 @@ namespace plumb::strapdown {
 void StillnessDetector::reset() {
   window_.clear();
   depths_.clear();
+  depth_max_.clear();
+  depth_min_.clear();
   candidate_ = confirmed_ = false;
   restart_stretch();
 }
@@ -27,41 +29,43 @@ void StillnessDetector::extend_stretch(const StillnessInput& in) {
   stretch_f_ += a * (in.f - stretch_f_);
 }
 
-bool StillnessDetector::window_quiet(double factor, double g, double extra_gyro_tol) {
+void StillnessDetector::measure_window(double g, double extra_gyro_tol) {
   const double n = static_cast<double>(window_.size());
-  Eigen::Vector3d f_mean = Eigen::Vector3d::Zero(), w_mean = Eigen::Vector3d::Zero();
+  Eigen::Vector3d f_sum = Eigen::Vector3d::Zero(), w_sum = Eigen::Vector3d::Zero();
+  double f_square_sum = 0, w_excess_square_sum = 0, f_dev = 0, b_dev = 0;
   for (const Entry& e : window_) {
-    f_mean += e.f;
-    w_mean += e.w;
-  }
-  f_mean /= n;
-  w_mean /= n;
-  window_f_mean_ = f_mean;
-  const double gyro_allowance = config_.gyro_tol + extra_gyro_tol + 4.0 * config_.sigma_w / std::sqrt(n);
-  const bool gyro_ok = w_mean.norm() < factor * gyro_allowance;
-  if (config_.mode == StillnessConfig::Mode::Glrt) {
-    const double fn = f_mean.norm();
-    const Eigen::Vector3d g_dir = fn > 0 ? Eigen::Vector3d(f_mean / fn) : Eigen::Vector3d::Zero();
-    const double ia = 1.0 / (config_.sigma_a * config_.sigma_a), iw = 1.0 / (config_.sigma_w * config_.sigma_w);
-    double t = 0;
+    f_sum += e.f;
+    w_sum += e.w;
+    f_square_sum += e.f.squaredNorm();
     // The rate energy counts only what exceeds the caller's ignorance of w_expected (before
     // alignment the whole earth rate): a navigation-grade gyro's noise is far below the earth rate.
-    for (const Entry& e : window_) {
-      const double w_excess = std::max(0.0, e.w.norm() - extra_gyro_tol);
-      t += (e.f - g * g_dir).squaredNorm() * ia + w_excess * w_excess * iw;
-    }
-    last_statistic_ = t / n;
-    return gyro_ok && last_statistic_ < factor * config_.glrt_threshold;
-  }
-  double f_dev = 0, b_dev = 0;
-  for (const Entry& e : window_) {
+    const double w_excess = std::max(0.0, e.w.norm() - extra_gyro_tol);
+    w_excess_square_sum += w_excess * w_excess;
     f_dev = std::max(f_dev, std::abs(e.f_dev));
     b_dev = std::max(b_dev, std::abs(e.b_dev));
   }
-  last_statistic_ = f_dev;
+  window_f_mean_ = f_sum / n;
+  window_w_mean_norm_ = (w_sum / n).norm();
+  window_gyro_allowance_ = config_.gyro_tol + extra_gyro_tol + 4.0 * config_.sigma_w / std::sqrt(n);
+  window_b_dev_ = b_dev;
+  if (config_.mode == StillnessConfig::Mode::Glrt) {
+    // sum |f - g u|^2 over the window, u the direction of the mean force, expanded so that one pass
+    // suffices: sum |f|^2 - 2 g u.sum f + n g^2 (u.sum f = n |mean f|).
+    const double fn = window_f_mean_.norm();
+    const double force_energy = std::max(0.0, f_square_sum - 2.0 * g * n * fn + n * g * g);
+    const double ia = 1.0 / (config_.sigma_a * config_.sigma_a), iw = 1.0 / (config_.sigma_w * config_.sigma_w);
+    last_statistic_ = (force_energy * ia + w_excess_square_sum * iw) / n;
+  } else {
+    last_statistic_ = f_dev;
+  }
+}
+
+bool StillnessDetector::window_quiet(double factor) const {
+  const bool gyro_ok = window_w_mean_norm_ < factor * window_gyro_allowance_;
+  if (config_.mode == StillnessConfig::Mode::Glrt) return gyro_ok && last_statistic_ < factor * config_.glrt_threshold;
   // The tolerance never falls below the sensor noise: 4 sigma per sample.
   const double accel_tol = std::max(config_.accel_tol, 4.0 * config_.sigma_a);
-  return gyro_ok && f_dev < factor * accel_tol && b_dev < factor * config_.field_tol_uT;
+  return gyro_ok && last_statistic_ < factor * accel_tol && window_b_dev_ < factor * config_.field_tol_uT;
 }
 
 bool StillnessDetector::period_quiet(double factor, double extra_gyro_tol) const {
@@ -85,21 +89,29 @@ StillnessState StillnessDetector::update(const StillnessInput& in) {
   }
   bool depth_ok = true, depth_ok_exit = true;
   if (in.depth_m) {
-    depths_.emplace_back(in.t, *in.depth_m);
+    const double d = *in.depth_m;
+    depths_.emplace_back(in.t, d);
+    while (!depth_max_.empty() && depth_max_.back().second <= d) depth_max_.pop_back();
+    while (!depth_min_.empty() && depth_min_.back().second >= d) depth_min_.pop_back();
+    depth_max_.emplace_back(depth_count_, d);
+    depth_min_.emplace_back(depth_count_, d);
+    ++depth_count_;
     while (depths_.size() > 2 && depths_.front().first < in.t - config_.depth_window_s) depths_.pop_front();
-    const auto [lo, hi] = std::minmax_element(depths_.begin(), depths_.end(),
-                                              [](const auto& a, const auto& b) { return a.second < b.second; });
-    const double range = hi->second - lo->second;
+    const std::uint64_t oldest = depth_count_ - depths_.size();
+    while (depth_max_.front().first < oldest) depth_max_.pop_front();
+    while (depth_min_.front().first < oldest) depth_min_.pop_front();
+    const double range = depth_max_.front().second - depth_min_.front().second;
     depth_ok = range < config_.depth_tol_m;
     depth_ok_exit = range < config_.hysteresis * config_.depth_tol_m;
   }
   const bool enough = window_.size() >= StillnessConfig::kMinWindowSamples;
+  if (enough) measure_window(in.g, in.extra_gyro_tol);
   const double factor = confirmed_ ? config_.hysteresis : 1.0;
-  const bool quiet = enough && (confirmed_ ? depth_ok_exit : depth_ok) && window_quiet(factor, in.g, in.extra_gyro_tol);
+  const bool quiet = enough && (confirmed_ ? depth_ok_exit : depth_ok) && window_quiet(factor);
   // Only clear motion (a window failing twice the exit thresholds) restarts the long means: a
   // borderline window inside a slow steady turn must not give the turn a fresh start.
   if (!quiet) {
-    if (!enough || !window_quiet(2.0 * config_.hysteresis, in.g, in.extra_gyro_tol)) restart_stretch();
+    if (!enough || !window_quiet(2.0 * config_.hysteresis)) restart_stretch();
   } else if (stretch_n_ == 0) {
     for (const Entry& e : window_) {
       StillnessInput past;

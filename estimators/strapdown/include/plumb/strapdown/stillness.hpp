@@ -21,6 +21,7 @@
 // threshold.
 #pragma once
 
+#include <cstdint>
 #include <deque>
 #include <optional>
 
@@ -84,12 +85,18 @@ class StillnessDetector {
     Eigen::Vector3d f, w;
     double f_dev, b_dev;
   };
-  bool window_quiet(double factor, double g, double extra_gyro_tol);
+  // One pass over the window per sample; window_quiet then compares at any threshold factor.
+  void measure_window(double g, double extra_gyro_tol);
+  bool window_quiet(double factor) const;
   bool period_quiet(double factor, double extra_gyro_tol) const;
 
   StillnessConfig config_;
   std::deque<Entry> window_;
+  // The depths of the last depth_window_s (time, depth) and, for their range in O(1) per sample,
+  // monotonic queues of (sequence number, depth): the largest and smallest still in the window.
   std::deque<std::pair<double, double>> depths_;
+  std::deque<std::pair<std::uint64_t, double>> depth_max_, depth_min_;
+  std::uint64_t depth_count_ = 0;
   bool candidate_ = false, confirmed_ = false;
   double period_start_ = 0;
   void extend_stretch(const StillnessInput& in);
@@ -99,6 +106,7 @@ class StillnessDetector {
   double stretch_n_ = 0;
   double last_dt_ = 0, last_t_ = 0;
   Eigen::Vector3d window_f_mean_ = Eigen::Vector3d::Zero();
+  double window_w_mean_norm_ = 0, window_gyro_allowance_ = 0, window_b_dev_ = 0;
   double last_statistic_ = 0;
 };
 
