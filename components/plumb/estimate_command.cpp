@@ -7,7 +7,9 @@
 #include "plumb/components/cli.hpp"
 #include "plumb/components/import_options.hpp"
 #include "plumb/csv/files.hpp"
+#include "plumb/components/convert.hpp"
 #include "plumb/estimator/loader.hpp"
+#include "recording.hpp"
 
 namespace plumb::cli {
 namespace {
@@ -15,6 +17,7 @@ namespace {
 struct EstimateOptions {
   std::vector<std::string> estimators;
   std::string input;
+  std::string topic;  // of a recording
   std::string output;
   double window_s = 0;
   std::vector<std::string> params;
@@ -28,13 +31,30 @@ int run_estimate(const EstimateOptions& o) {
   runner.configure(o.params, o.window_s);
   const csv::Import import = o.import.make();
 
-  std::ifstream in(o.input);
-  if (!in) throw std::runtime_error("cannot open input '" + o.input + "'");
-  csv::SensorReader reader(in, o.input, import);
-  if (!csv::is_default(import)) std::cerr << "plumb estimate: reading " << o.input << " with " << csv::describe(import) << '\n';
-  if (!reader.has_gyro()) {
+  // The input: a recording (MCAP, plumb record) or a sensor CSV.
+  const bool recording = is_recording(o.input);
+  std::vector<Sample> recorded;
+  std::string recorded_topic;
+  std::ifstream in;
+  std::unique_ptr<csv::SensorReader> reader;
+  bool has_gyro = false;
+  if (recording) {
+    recorded_topic = read_recorded_batches("plumb estimate", o.input, o.topic, [&](const topics::SensorBatch& batch) {
+      for (const auto& s : batch.samples) recorded.push_back(components::from_topic(s));
+    });
+    has_gyro = !recorded.empty() && (recorded.front().flags & flags::kHasGyro);
+  } else {
+    if (!o.topic.empty()) throw std::invalid_argument("--topic applies to a recording (.mcap); " + o.input + " is not one");
+    in.open(o.input);
+    if (!in) throw std::runtime_error("cannot open input '" + o.input + "'");
+    reader = std::make_unique<csv::SensorReader>(in, o.input, import);
+    if (!csv::is_default(import)) std::cerr << "plumb estimate: reading " << o.input << " with " << csv::describe(import) << '\n';
+    has_gyro = reader->has_gyro();
+  }
+  if (!has_gyro) {
     for (const auto& name : runner.needing_gyro())
-      throw std::invalid_argument("estimator '" + name + "' needs gyros, and " + o.input + " has no wx, wy, wz columns");
+      throw std::invalid_argument("estimator '" + name + "' needs gyros, and " + o.input + " has no " +
+                                  (recording ? "gyro samples on " + recorded_topic : std::string("wx, wy, wz columns")));
   }
   bool navigation = false;
   for (const auto& info : runner.infos()) navigation = navigation || info.uses_gyro;
@@ -59,10 +79,16 @@ int run_estimate(const EstimateOptions& o) {
     }
     runner.push(chunk, write);
   };
+  std::size_t next_recorded = 0;
   while (true) {
     Sample s;
     try {
-      if (!reader.next(s)) break;
+      if (recording) {
+        if (next_recorded == recorded.size()) break;
+        s = recorded[next_recorded++];
+      } else if (!reader->next(s)) {
+        break;
+      }
     } catch (const csv::Error& e) {
       if (!o.skip_bad_rows) throw;
       ++bad_rows;
@@ -81,6 +107,7 @@ int run_estimate(const EstimateOptions& o) {
   out.flush();
 
   std::cerr << "plumb estimate: " << rows << " samples from " << o.input;
+  if (recording) std::cerr << " (" << recorded_topic << ")";
   if (bad_rows) std::cerr << " (" << bad_rows << " bad rows skipped)";
   std::cerr << '\n';
   for (const auto& slot : runner.slots()) {
@@ -97,7 +124,8 @@ void add_estimate_command(CLI::App& app) {
   auto o = std::make_shared<EstimateOptions>();
   auto* cmd = app.add_subcommand("estimate", "Run estimator plugins offline on a sensor CSV; write an attitude CSV");
   cmd->add_option("-e,--estimator,--plugin", o->estimators, "estimator plugin name (repeat to run several side by side; --plugin, as for plumb-estimator, is the same)")->required();
-  cmd->add_option("-i,--input", o->input, "sensor CSV (CONVENTIONS.md format)")->required();
+  cmd->add_option("-i,--input", o->input, "sensor CSV (CONVENTIONS.md format) or MCAP recording (plumb record)")->required();
+  cmd->add_option("-t,--topic", o->topic, "sensor topic of a recording (default: plumb/sensor/calibrated, else plumb/sensor/raw)");
   cmd->add_option("-o,--output", o->output, "attitude CSV to write (default: standard output)");
   cmd->add_option("-w,--window", o->window_s, "window length in seconds; 0 = the whole file (one row)")->capture_default_str();
   components::add_param_option(*cmd, o->params);

@@ -9,13 +9,15 @@
 namespace plumb::mcap::test {
 namespace {
 
-TEST(McapDamage, CutAtEveryOffsetReadsTheWholeChunksBefore) {
+TEST(McapDamage, CutAnywhereReadsTheWholeChunksBefore) {
   const auto path = temp_path("whole.mcap");
   write_sample(path, 60, 128);
   const auto bytes = file_bytes(path);
   std::size_t previous = 0;
   const auto cut = temp_path("cut.mcap");
-  for (std::size_t n = 8; n < bytes.size(); ++n) {
+  // Every offset through the header, schema, channel, metadata and the first chunks (every field
+  // of each record class), then every 7th byte: a prime stride lands in every field of later records.
+  for (std::size_t n = 8; n < bytes.size(); n += (n < 1200 ? 1 : 7)) {
     write_bytes(cut, bytes, n);
     Reader r(cut);
     EXPECT_FALSE(r.has_summary()) << n;
