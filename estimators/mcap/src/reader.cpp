@@ -54,6 +54,7 @@ struct Reader::State {
       const auto summary_offset_start = footer.get<std::uint64_t>("summary_offset_start");
       const auto crc = footer.get<std::uint32_t>("summary_crc");
       if (summary_start == 0 || summary_start > footer_at) return false;
+      if (summary_offset_start != 0 && (summary_offset_start < summary_start || summary_offset_start > footer_at)) return false;
       if (crc != 0) {
         const std::uint32_t computed = detail::crc32(0, data + summary_start, footer_at + kRecordHeader + 16 - summary_start);
         if (computed != crc) {
@@ -83,7 +84,7 @@ struct Reader::State {
           case kMetadataIndex: {
             const auto at = body.get<std::uint64_t>("offset");
             const auto len = body.get<std::uint64_t>("length");
-            if (at + len > size || len < kRecordHeader) return false;
+            if (at > size || len > size - at || len < kRecordHeader) return false;
             Cursor record(data + at + kRecordHeader, len - kRecordHeader);
             metadata.push_back(detail::decode_metadata(record));
             break;
