@@ -91,5 +91,19 @@ TEST(McapDamage, ACorruptSummaryFallsBackToTheScan) {
   std::filesystem::remove(path);
 }
 
+TEST(McapDamage, AFooterPointingOutsideTheSummaryFallsBackToTheScan) {
+  const auto path = temp_path("footer.mcap");
+  write_sample(path, 50);
+  auto bytes = file_bytes(path);
+  const std::size_t footer = bytes.size() - 8 - 29;
+  for (std::size_t i = 0; i < 8; ++i) bytes[footer + 17 + i] = static_cast<char>(i == 0 ? 1 : 0);  // summary_offset_start = 1
+  for (std::size_t i = 0; i < 4; ++i) bytes[footer + 25 + i] = 0;  // summary CRC "not available"
+  write_bytes(path, bytes, bytes.size());
+  Reader r(path);
+  EXPECT_FALSE(r.has_summary());
+  EXPECT_EQ(read_all(r).size(), 50u);
+  std::filesystem::remove(path);
+}
+
 }  // namespace
 }  // namespace plumb::mcap::test
