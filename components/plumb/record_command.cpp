@@ -2,6 +2,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <iomanip>
@@ -51,6 +52,13 @@ std::string host_name() {
   return name;
 }
 
+// The domain the connection used: the option, else $PLUMB_DOMAIN_ID, else 0 (as connect() does).
+std::string domain_text(const components::TransportOptions& o) {
+  if (o.domain_id >= 0) return std::to_string(o.domain_id);
+  const char* d = std::getenv("PLUMB_DOMAIN_ID");
+  return d && *d ? d : "0";
+}
+
 // A topic of the network worth recording when no list was given: a plumb name with a plumb type.
 bool recordable(const transport::DiscoveredTopic& t) {
   return t.writers > 0 && t.name.rfind("plumb/", 0) == 0 && topics::find_type_support(t.type_name) != nullptr;
@@ -74,10 +82,7 @@ int run_record(const RecordOptions& o) {
                          {{"vendor", conn.transport->vendor_version()},
                           {"transport", conn.transport->name()},
                           {"host", host_name()},
-                          {"domain", std::to_string(options.domain_id >= 0 ? options.domain_id : [] {
-                             const char* d = std::getenv("PLUMB_DOMAIN_ID");
-                             return d ? std::atoi(d) : 0;
-                           }())},
+                          {"domain", domain_text(options)},
                           {"start_time", utc_time(start)},
                           {"start_time_ns", std::to_string(std::chrono::duration_cast<std::chrono::nanoseconds>(
                                                                start.time_since_epoch()).count())},
