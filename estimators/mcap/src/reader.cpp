@@ -5,7 +5,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -35,6 +34,7 @@ struct Reader::State {
   std::vector<Metadata> metadata;
   Header header;
   std::vector<std::string> problems;
+  std::vector<std::string> summary_problems;  // found when opening (a summary CRC that fails)
   std::uint64_t readable = 0;
   std::vector<std::uint8_t> chunk;  // decompressed records, reused
 
@@ -212,6 +212,7 @@ Reader::Reader(const std::string& path) : s_(std::make_unique<State>()) {
     throw Error("'" + path + "' is not an MCAP file (byte 0: no MCAP magic)");
   }
   s_->summary = s_->read_summary();
+  s_->summary_problems = s_->problems;
   if (!s_->summary) {
     s_->schemas.clear();
     s_->channels.clear();
@@ -224,9 +225,7 @@ Reader::~Reader() { ::munmap(const_cast<std::uint8_t*>(s_->data), s_->size); }
 
 void Reader::scan(const MessageCallback& on_message) {
   auto& s = *s_;
-  s.problems.erase(std::remove_if(s.problems.begin(), s.problems.end(),
-                                  [](const std::string& p) { return p.find("summary") == std::string::npos; }),
-                   s.problems.end());
+  s.problems = s.summary_problems;  // what opening found stays; the last scan's own are replaced
   s.scanned = Statistics{};
   if (!s.summary) s.metadata.clear();
   std::size_t at = sizeof kMagic;
