@@ -9,6 +9,10 @@ void add_topic_commands(CLI::App& app);      // topic list | echo | hz | pub
 void add_listing_commands(CLI::App& app);    // transports, plugins
 void add_estimate_command(CLI::App& app);    // estimate (offline, CSV in, CSV out)
 void add_compare_command(CLI::App& app);     // compare (scenario grid, CRB, plots)
+void add_record_command(CLI::App& app);      // record (topics into an MCAP file), record --repair
+void add_play_command(CLI::App& app);        // play (an MCAP recording back onto the topics)
+void add_info_command(CLI::App& app);        // info (what a recording holds)
+void add_export_command(CLI::App& app);      // export (a recorded topic as CSV)
 
 // Set by a subcommand's callback: the process exit code.
 extern int g_exit_code;

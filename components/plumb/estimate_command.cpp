@@ -7,7 +7,9 @@
 #include "plumb/components/cli.hpp"
 #include "plumb/components/import_options.hpp"
 #include "plumb/csv/files.hpp"
+#include "plumb/components/convert.hpp"
 #include "plumb/estimator/loader.hpp"
+#include "recording.hpp"
 
 namespace plumb::cli {
 namespace {
@@ -15,6 +17,7 @@ namespace {
 struct EstimateOptions {
   std::vector<std::string> estimators;
   std::string input;
+  std::string topic;  // of a recording
   std::string output;
   double window_s = 0;
   std::vector<std::string> params;
@@ -28,59 +31,89 @@ int run_estimate(const EstimateOptions& o) {
   runner.configure(o.params, o.window_s);
   const csv::Import import = o.import.make();
 
-  std::ifstream in(o.input);
-  if (!in) throw std::runtime_error("cannot open input '" + o.input + "'");
-  csv::SensorReader reader(in, o.input, import);
-  if (!csv::is_default(import)) std::cerr << "plumb estimate: reading " << o.input << " with " << csv::describe(import) << '\n';
-  if (!reader.has_gyro()) {
-    for (const auto& name : runner.needing_gyro())
-      throw std::invalid_argument("estimator '" + name + "' needs gyros, and " + o.input + " has no wx, wy, wz columns");
+  // The input: a recording (MCAP, plumb record) or a sensor CSV. A recording streams through
+  // in chunks like a CSV (10 minutes at 10 kHz are 6 million samples: never all in memory).
+  const bool recording = is_recording(o.input);
+  std::ifstream in;
+  std::unique_ptr<csv::SensorReader> reader;
+  if (!recording) {
+    if (!o.topic.empty()) throw std::invalid_argument("--topic applies to a recording (.mcap); " + o.input + " is not one");
+    in.open(o.input);
+    if (!in) throw std::runtime_error("cannot open input '" + o.input + "'");
+    reader = std::make_unique<csv::SensorReader>(in, o.input, import);
+    if (!csv::is_default(import)) std::cerr << "plumb estimate: reading " << o.input << " with " << csv::describe(import) << '\n';
   }
+  const auto check_gyro = [&](bool has_gyro, const std::string& what) {
+    if (has_gyro) return;
+    for (const auto& name : runner.needing_gyro())
+      throw std::invalid_argument("estimator '" + name + "' needs gyros, and " + o.input + " has no " + what);
+  };
+  if (!recording) check_gyro(reader->has_gyro(), "wx, wy, wz columns");
   bool navigation = false;
   for (const auto& info : runner.infos()) navigation = navigation || info.uses_gyro;
 
   std::ofstream file;
-  if (!o.output.empty()) {
-    file.open(o.output);
-    if (!file) throw std::runtime_error("cannot write output '" + o.output + "'");
-  }
-  std::ostream& out = o.output.empty() ? std::cout : file;
-  csv::write_attitude_header(out, navigation);
-  const auto write = [&](const estimator::Runner::Slot&, Estimate& e) { csv::write_attitude_row(out, e, navigation); };
+  std::ostream* out = &std::cout;
+  // The output opens with the first samples, once the input proved usable (a recording says
+  // whether it has gyros only with its first batch).
+  bool started = false;
+  const auto start = [&] {
+    if (started) return;
+    started = true;
+    if (!o.output.empty()) {
+      file.open(o.output);
+      if (!file) throw std::runtime_error("cannot write output '" + o.output + "'");
+      out = &file;
+    }
+    csv::write_attitude_header(*out, navigation);
+  };
+  const auto write = [&](const estimator::Runner::Slot&, Estimate& e) { csv::write_attitude_row(*out, e, navigation); };
 
   std::vector<Sample> chunk;
   std::size_t rows = 0, bad_rows = 0;
   bool units_checked = false;
   // The first chunk is the start of the file: seconds of data, enough to tell g from m/s^2.
   const auto push = [&] {
+    start();
     if (!units_checked) {
       for (const auto& warning : csv::check_units(chunk, import)) std::cerr << "plumb estimate: warning: " << warning << '\n';
       units_checked = true;
     }
     runner.push(chunk, write);
+    chunk.clear();
   };
-  while (true) {
-    Sample s;
-    try {
-      if (!reader.next(s)) break;
-    } catch (const csv::Error& e) {
-      if (!o.skip_bad_rows) throw;
-      ++bad_rows;
-      std::cerr << "plumb estimate: skipped " << e.what() << '\n';
-      continue;
-    }
+  const auto consume = [&](const Sample& s) {
     ++rows;
     chunk.push_back(s);
-    if (chunk.size() == 1024) {
-      push();
-      chunk.clear();
+    if (chunk.size() == 1024) push();
+  };
+  std::string recorded_topic;
+  if (recording) {
+    recorded_topic = read_recorded_batches("plumb estimate", o.input, o.topic, [&](const topics::SensorBatch& batch) {
+      if (rows == 0 && !batch.samples.empty())
+        check_gyro(batch.samples.front().flags & topics::SAMPLE_HAS_GYRO, "gyro samples on its sensor topic");
+      for (const auto& s : batch.samples) consume(components::from_topic(s));
+    });
+  } else {
+    while (true) {
+      Sample s;
+      try {
+        if (!reader->next(s)) break;
+      } catch (const csv::Error& e) {
+        if (!o.skip_bad_rows) throw;
+        ++bad_rows;
+        std::cerr << "plumb estimate: skipped " << e.what() << '\n';
+        continue;
+      }
+      consume(s);
     }
   }
   push();
   runner.flush(write);
-  out.flush();
+  out->flush();
 
   std::cerr << "plumb estimate: " << rows << " samples from " << o.input;
+  if (recording) std::cerr << " (" << recorded_topic << ")";
   if (bad_rows) std::cerr << " (" << bad_rows << " bad rows skipped)";
   std::cerr << '\n';
   for (const auto& slot : runner.slots()) {
@@ -97,7 +130,8 @@ void add_estimate_command(CLI::App& app) {
   auto o = std::make_shared<EstimateOptions>();
   auto* cmd = app.add_subcommand("estimate", "Run estimator plugins offline on a sensor CSV; write an attitude CSV");
   cmd->add_option("-e,--estimator,--plugin", o->estimators, "estimator plugin name (repeat to run several side by side; --plugin, as for plumb-estimator, is the same)")->required();
-  cmd->add_option("-i,--input", o->input, "sensor CSV (CONVENTIONS.md format)")->required();
+  cmd->add_option("-i,--input", o->input, "sensor CSV (CONVENTIONS.md format) or MCAP recording (plumb record)")->required();
+  cmd->add_option("-t,--topic", o->topic, "sensor topic of a recording (default: plumb/sensor/calibrated, else plumb/sensor/raw)");
   cmd->add_option("-o,--output", o->output, "attitude CSV to write (default: standard output)");
   cmd->add_option("-w,--window", o->window_s, "window length in seconds; 0 = the whole file (one row)")->capture_default_str();
   components::add_param_option(*cmd, o->params);

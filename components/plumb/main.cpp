@@ -16,6 +16,10 @@ int main(int argc, char** argv) {
   plumb::cli::add_listing_commands(app);
   plumb::cli::add_estimate_command(app);
   plumb::cli::add_compare_command(app);
+  plumb::cli::add_record_command(app);
+  plumb::cli::add_play_command(app);
+  plumb::cli::add_info_command(app);
+  plumb::cli::add_export_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -80,10 +80,39 @@ def struct_text(s, structs):
     return out
 
 
-def file_header(f, structs):
+def idl_dependencies(s, structs, seen):
+    """The IDL files (stems) whose text a self-contained schema of `s` needs, dependencies first."""
+    for m in s.members:
+        t = m.type
+        while t.kind in ("array", "sequence"):
+            t = t.element
+        if t.kind == "struct" and t.name in structs:
+            idl_dependencies(structs[t.name], structs, seen)
+    if s.file not in seen:
+        seen.append(s.file)
+    return seen
+
+
+def idl_source_text(s, structs, texts):
+    """The IDL of `s` and every type it uses, one file's text after another (no #include): what a
+    recording stores as the type's schema (MCAP schema encoding `omgidl`)."""
+    text = "".join(texts[stem] for stem in idl_dependencies(s, structs, []))
+    if ")plumbidl\"" in text:
+        raise IdlError(f"{s.file}.idl:{s.line}: error: the text ')plumbidl\"' cannot be embedded")
+    return text
+
+
+def idl_source_specialisation(s, structs, texts):
+    return (f"template <> struct IdlSourceOf<{s.name}> {{\n"
+            f"  static constexpr std::string_view text = R\"plumbidl({idl_source_text(s, structs, texts)})plumbidl\";\n"
+            f"}};\n\n")
+
+
+def file_header(f, structs, texts=None):
     out = BANNER.format(source=f"{f.stem}.idl")
     out += ("#pragma once\n\n#include <array>\n#include <cstddef>\n#include <cstdint>\n#include <string>\n"
-            "#include <string_view>\n#include <type_traits>\n#include <vector>\n\n#include \"plumb/topics/type_support.hpp\"\n\n"
+            "#include <string_view>\n#include <type_traits>\n#include <vector>\n\n#include \"plumb/topics/idl_source.hpp\"\n"
+            "#include \"plumb/topics/type_support.hpp\"\n\n"
             "namespace plumb::topics {\n\n")
     for c in f.consts:
         out += const_line(c)
@@ -91,6 +120,8 @@ def file_header(f, structs):
         out += "\n"
     for s in f.structs:
         out += struct_text(s, structs)
+        if texts is not None:
+            out += idl_source_specialisation(s, structs, texts)
     out += "}  // namespace plumb::topics\n"
     return out
 
@@ -170,7 +201,11 @@ def names_header(files, structs):
 
 def emit(files, structs):
     """{relative output path: text}"""
-    outputs = {f"plumb/topics/{f.stem}.hpp": file_header(f, structs) for f in files}
+    texts = {}
+    for f in files:
+        with open(f.path, encoding="utf-8") as source:
+            texts[f.stem] = source.read()
+    outputs = {f"plumb/topics/{f.stem}.hpp": file_header(f, structs, texts) for f in files}
     outputs["plumb/topics/all.hpp"] = umbrella(files)
     outputs["plumb/topics/names.hpp"] = names_header(files, structs)
     return outputs

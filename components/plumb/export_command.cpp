@@ -1,0 +1,146 @@
+// plumb export: one recorded topic as CSV in the formats of CONVENTIONS.md: a sensor topic as the
+// sensor CSV (plumb estimate and plumb-bridge --replay read it), an attitude topic as the attitude
+// CSV, the truth as the truth CSV; any other topic as its flattened fields (as topic echo --csv).
+#include <fstream>
+#include <iostream>
+
+#include "commands.hpp"
+#include "csv_output.hpp"
+#include "plumb/mcap/reader.hpp"
+#include "plumb/topics/cdr.hpp"
+#include "plumb/topics/names.hpp"
+#include "recording.hpp"
+#include "topic_type.hpp"
+
+namespace plumb::cli {
+namespace {
+
+struct ExportOptions {
+  std::string input;
+  std::string topic;
+  std::string output;
+};
+
+Estimate from_topic(const topics::Attitude& a) {
+  Estimate e;
+  e.estimator = a.estimator;
+  e.t_start = components::ns_to_seconds(a.window_start_ns);
+  e.t_end = components::ns_to_seconds(a.window_end_ns);
+  e.inclination_deg = a.inclination_deg;
+  e.azimuth_deg = a.azimuth_deg;
+  e.gravity_toolface_deg = a.gravity_toolface_deg;
+  e.magnetic_toolface_deg = a.magnetic_toolface_deg;
+  e.rpm = a.rpm;
+  e.inclination_sd_deg = a.inclination_sd_deg;
+  e.azimuth_sd_deg = a.azimuth_sd_deg;
+  e.toolface_sd_deg = a.toolface_sd_deg;
+  e.dip_deg = a.dip_deg;
+  e.total_g = a.total_g;
+  e.total_b = a.total_b;
+  e.samples_used = a.samples_used;
+  e.valid = a.flags & topics::ATTITUDE_VALID;
+  e.azimuth_valid = a.flags & topics::ATTITUDE_AZIMUTH_VALID;
+  e.toolface_valid = a.flags & topics::ATTITUDE_TOOLFACE_VALID;
+  e.rotating = a.flags & topics::ATTITUDE_ROTATING;
+  e.partial_window = a.flags & topics::ATTITUDE_PARTIAL_WINDOW;
+  e.reason = a.reason;
+  return e;
+}
+
+// Writes the messages of one topic, decoded, in the CSV its type has.
+template <class M> class TopicCsv {
+ public:
+  void write(std::ostream& out, const M& m) {
+    if constexpr (std::is_same_v<M, topics::SensorBatch>) {
+      sensor_.write(out, m);
+    } else if constexpr (std::is_same_v<M, topics::Attitude>) {
+      if (!header_) csv::write_attitude_header(out);
+      header_ = true;
+      csv::write_attitude_row(out, from_topic(m));
+    } else if constexpr (std::is_same_v<M, topics::Truth>) {
+      if (!header_) out << "t,inclination_deg,azimuth_deg,toolface_deg,rpm\n";
+      header_ = true;
+      out << format_number(components::ns_to_seconds(m.stamp_ns)) << ',' << format_number(m.inclination_deg) << ','
+          << format_number(m.azimuth_deg) << ',' << format_number(m.toolface_deg) << ',' << format_number(m.rpm) << '\n';
+    } else {
+      flat_.write(out, m);
+    }
+  }
+
+ private:
+  SensorCsvWriter sensor_;
+  FlatCsvWriter flat_;
+  bool header_ = false;
+};
+
+int run_export(const ExportOptions& o) {
+  mcap::Reader reader(o.input);
+  if (!reader.has_summary()) reader.scan();  // learns the channels of a cut file
+  std::string topic = o.topic;
+  const mcap::Channel* channel = nullptr;
+  std::string names;
+  for (const auto& [id, c] : reader.channels()) {
+    names += (names.empty() ? "" : ", ") + c.topic;
+    if (c.topic == topic) channel = &c;
+  }
+  if (topic.empty()) {
+    // Default: the sensor topic, as plumb estimate --input takes it.
+    const auto& sensor = topics::type_support<topics::SensorBatch>();
+    for (const char* preferred : {topics::names::kSensorCalibrated, topics::names::kSensorRaw}) {
+      for (const auto& [id, c] : reader.channels()) {
+        const auto* type = channel_type(reader, c);
+        if (!channel && c.topic == preferred && type && *type == sensor) channel = &c;
+      }
+    }
+    if (!channel) throw std::invalid_argument(o.input + ": no sensor topic to export by default: choose one with --topic (" + names + ")");
+    topic = channel->topic;
+  }
+  if (!channel) throw std::invalid_argument(o.input + ": no topic '" + topic + "' in the recording (" + names + ")");
+  const auto* type = channel_type(reader, *channel);
+  if (!type) throw std::runtime_error(o.input + ": topic '" + topic + "' is not a plumb CDR topic (schema unknown to this plumb)");
+
+  std::ofstream file;
+  if (!o.output.empty()) {
+    file.open(o.output);
+    if (!file) throw std::runtime_error("cannot write '" + o.output + "'");
+  }
+  std::ostream& out = o.output.empty() ? std::cout : file;
+  const std::uint16_t id = channel->id;
+  std::size_t messages = 0, skipped = 0;
+  with_topic_type(*type, [&](auto proto) {
+    using M = decltype(proto);
+    M message;
+    TopicCsv<M> csv;
+    reader.scan([&](const mcap::Channel& c, const mcap::MessageView& m) {
+      if (c.id != id) return;
+      try {
+        topics::cdr::deserialize(m.data, m.size, message);
+      } catch (const topics::cdr::Error& e) {
+        if (++skipped <= 3) std::cerr << "plumb export: warning: message " << m.sequence << " skipped: " << e.what() << '\n';
+        return;
+      }
+      csv.write(out, message);
+      ++messages;
+    });
+  });
+  out.flush();
+  if (!out) throw std::runtime_error("cannot write '" + (o.output.empty() ? std::string("standard output") : o.output) + "'");
+  warn_problems("plumb export", reader);
+  std::cerr << "plumb export: " << messages << " message(s) of '" << topic << "' from " << o.input;
+  if (skipped) std::cerr << " (" << skipped << " undecodable, skipped)";
+  std::cerr << '\n';
+  return 0;
+}
+
+}  // namespace
+
+void add_export_command(CLI::App& app) {
+  auto o = std::make_shared<ExportOptions>();
+  auto* cmd = app.add_subcommand("export", "Write one topic of an MCAP recording as CSV (the formats of CONVENTIONS.md)");
+  cmd->add_option("file", o->input, "the recording (.mcap)")->required();
+  cmd->add_option("-t,--topic", o->topic, "topic to export (default: plumb/sensor/calibrated, else plumb/sensor/raw)");
+  cmd->add_option("-o,--output", o->output, "CSV file to write (default: standard output)");
+  cmd->callback([o] { g_exit_code = run_export(*o); });
+}
+
+}  // namespace plumb::cli

@@ -1,0 +1,12 @@
+// CRC-32 (IEEE 802.3, the zlib one) that MCAP puts on chunks, the data section and the summary.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace plumb::mcap::detail {
+
+// Continues `crc` (0 to start) over `size` bytes; crc32(crc32(0, a), b) == crc32 of a then b.
+std::uint32_t crc32(std::uint32_t crc, const void* data, std::size_t size);
+
+}  // namespace plumb::mcap::detail
