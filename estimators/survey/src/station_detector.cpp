@@ -24,7 +24,6 @@ StationDetector::StationDetector(DetectorOptions options, Sink sink, std::functi
 void StationDetector::resume(double t, double md, std::size_t stations) {
   last_t_ = t;
   last_md_ = md;
-  moved_since_station_ = false;  // the stop that made the last station may still be going on
   in_stop_ = true;
   stops_ = stations;
   counters_.stations = stations;
@@ -35,8 +34,6 @@ void StationDetector::add_depth(const DepthReport& d) {
   // Reports arrive in order from one rig; a late one is put in its place.
   auto it = std::upper_bound(depth_.begin(), depth_.end(), d.t_s, [](double t, const DepthReport& r) { return t < r.t_s; });
   depth_.insert(it, d);
-  if (last_md_ && (d.moving || std::abs(d.depth_m - *last_md_) > options_.still_tolerance_m) && d.t_s > last_t_)
-    moved_since_station_ = true;
   process_ready(false);
 }
 
@@ -115,9 +112,11 @@ void StationDetector::decide(const Pending& p) {
       // Only the latest report before the start counts; earlier ones are superseded.
       values.clear();
       lo = 1e300, hi = -1e300, moving = false;
-      before = true;
     }
-    if (d.t_s >= e.t_end) after = true;
+    // Reports within `gap` of both ends: the depth is known over the whole window (a log that
+    // starts with the window, at t = 0, has nothing before it).
+    if (d.t_s <= e.t_start + gap) before = true;
+    if (d.t_s >= e.t_end - gap) after = true;
     lo = std::min(lo, d.depth_m);
     hi = std::max(hi, d.depth_m);
     moving = moving || (d.moving && d.t_s > e.t_start);
@@ -136,13 +135,13 @@ void StationDetector::decide(const Pending& p) {
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2), values.end());
   const double md = values[values.size() / 2];
   if (last_md_ && std::abs(md - *last_md_) <= options_.new_station_m) {
-    if (!moved_since_station_) {
+    if (!moved_since(e.t_start)) {
       ++counters_.same_stop_windows;
       return;
     }
     // The string moved and came back to the same depth: a resurvey of a station the survey has.
     ++counters_.repeat_stops;
-    moved_since_station_ = false;
+    last_t_ = e.t_end;  // this stop is told once
     if (note_) {
       std::ostringstream o;
       o << "stop at " << md << " m repeats the last station's depth: not a new station (t " << e.t_end << " s)";
@@ -151,6 +150,17 @@ void StationDetector::decide(const Pending& p) {
     return;
   }
   take(p, md, sd);
+}
+
+bool StationDetector::moved_since(double until) const {
+  // Judged on the reports between the last station and this window, in time order: reports of
+  // later motion (offline, the depth runs ahead of the attitude) must not count. Reports already
+  // pruned, or none (just resumed), say nothing: the stop goes on.
+  const auto first = std::upper_bound(depth_.begin(), depth_.end(), last_t_,
+                                      [](double t, const DepthReport& r) { return t < r.t_s; });
+  for (auto it = first; it != depth_.end() && it->t_s <= until; ++it)
+    if (it->moving || std::abs(it->depth_m - *last_md_) > options_.still_tolerance_m) return true;
+  return false;
 }
 
 void StationDetector::take(const Pending& p, double md, double md_sd) {
@@ -173,7 +183,6 @@ void StationDetector::take(const Pending& p, double md, double md_sd) {
   }
   last_md_ = md;
   last_t_ = e.t_end;
-  moved_since_station_ = false;
   ++counters_.stations;
   sink_(s);
 }

@@ -80,6 +80,7 @@ class StationDetector {
   void decide(const Pending& p);
   void take(const Pending& p, double md, double md_sd);
   void prune();
+  bool moved_since(double until) const;  // the depth left the last station's between it and `until`
 
   DetectorOptions options_;
   Sink sink_;
@@ -89,7 +90,6 @@ class StationDetector {
   DetectorCounters counters_;
   std::optional<double> last_md_;
   double last_t_ = -1e300;
-  bool moved_since_station_ = true; // the string left the last station's depth
   bool in_stop_ = false;            // tally mode: inside a run of still windows
   std::size_t stops_ = 0;           // tally mode: stops seen
 };
