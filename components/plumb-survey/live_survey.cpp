@@ -104,8 +104,18 @@ int run_live_survey(const LiveOptions& o) {
   const auto enough = [&] { return o.count > 0 && result.rows().size() >= static_cast<std::size_t>(o.count); };
   topics::Attitude a;
   topics::MeasuredDepth d;
+  bool attitude_matched = false, depth_matched = false;
   status.publish("running", counters());
   while (!components::g_stop && !enough()) {
+    // Said once each: an operator (or a test) knows the inputs are connected before the run starts.
+    if (!attitude_matched && attitude.matched_writers() > 0) {
+      attitude_matched = true;
+      note("attitude writer matched on " + attitude_topic);
+    }
+    if (!depth_matched && depth.matched_writers() > 0) {
+      depth_matched = true;
+      note("depth writer matched on " + std::string(transport::topic_names::kDepth));
+    }
     if (o.timeout_s > 0 && std::chrono::duration<double>(Clock::now() - t0).count() > o.timeout_s) {
       status.publish("failed", counters(), "timed out");
       components::print_error(kProgram, "timed out with " + std::to_string(result.rows().size()) + " of " +

@@ -11,6 +11,7 @@
 #include "plumb/components/survey_options.hpp"
 #include "plumb/csv/files.hpp"
 #include "plumb/estimator/loader.hpp"
+#include "plumb/survey/multi_station.hpp"
 #include "plumb/survey/survey_file.hpp"
 #include "survey_inputs.hpp"
 #include "survey_plot.hpp"
@@ -115,6 +116,15 @@ int run_survey(const SurveyCommandOptions& o) {
               << " repeated stop(s))";
   std::cerr << '\n';
   if (result.rows().empty()) throw std::runtime_error("no station found in the input");
+  // Multi-station analysis: reported, not applied (the survey keeps what was measured).
+  std::vector<survey::Station> measured;
+  for (const auto& row : result.rows()) measured.push_back(row.station);
+  const auto msa = survey::estimate_axial_bias(measured, result.options().field);
+  if (msa.valid && msa.stations >= 2)
+    std::cerr << "plumb survey: multi-station analysis: axial magnetometer bias " << msa.bias_uT << " +- " << msa.sd_uT
+              << " uT over " << msa.stations << " stations (|B| residual RMS " << msa.rms_b_before_uT << " -> "
+              << msa.rms_b_after_uT << " uT, dip " << msa.rms_dip_before_deg << " -> " << msa.rms_dip_after_deg
+              << " deg once removed)\n";
   return 0;
 }
 

@@ -28,7 +28,7 @@ pids+=($!)
 first=$!
 pids+=($first)
 wait_for "$work/survey1.err" "file .*survey.csv" 20 || { echo "plumb-survey did not start:"; cat "$work/survey1.err"; exit 1; }
-wait_for "$work/estimator.out" "reading plumb/sensor/raw" 20 || { echo "plumb-estimator did not start:"; cat "$work/estimator.out"; exit 1; }
+wait_for "$work/survey1.err" "attitude writer matched" 30 || { echo "plumb-survey never matched the estimator:"; cat "$work/survey1.err" "$work/estimator.out"; exit 1; }
 # No accelerometer bias: the stations are then checked against the estimator's own sigma (a bias is a
 # calibration error, outside a static estimate's sigma).
 run=(--scenario drilling-survey --accel-bias 0,0,0)
