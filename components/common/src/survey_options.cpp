@@ -39,6 +39,8 @@ void add_survey_options(CLI::App& app, SurveyCliOptions& o) {
       ->capture_default_str();
   app.add_option("--still-tolerance", o.still_tolerance_m, "depth change within a window that still counts as a stop, m")
       ->capture_default_str();
+  app.add_option("--min-still", o.min_still_s, "the depth must have stood this long before a window's end, s")
+      ->capture_default_str();
   app.add_option("--new-station", o.new_station_m, "a stop closer than this to the last station is the same station, m")
       ->capture_default_str();
   app.add_option("--pipe-length", o.pipe_length_m, "no depth input: pipe tally, one joint of this length per stop, m");
@@ -100,6 +102,8 @@ survey::DetectorOptions make_detector_options(const SurveyCliOptions& o) {
   survey::DetectorOptions d;
   d.still_tolerance_m = o.still_tolerance_m;
   d.new_station_m = o.new_station_m;
+  d.min_still_s = o.min_still_s;
+  if (!(d.min_still_s >= 0)) throw std::invalid_argument("--min-still must be >= 0");
   if (!(d.still_tolerance_m > 0) || !(d.new_station_m > 0))
     throw std::invalid_argument("--still-tolerance and --new-station must be > 0");
   if (o.pipe_length_m) {

@@ -17,7 +17,8 @@ double PipeTally::depth_at(std::size_t stop) const {
 
 StationDetector::StationDetector(DetectorOptions options, Sink sink, std::function<void(const std::string&)> note)
     : options_(std::move(options)), sink_(std::move(sink)), note_(std::move(note)) {
-  if (!(options_.still_tolerance_m > 0) || !(options_.new_station_m > 0) || !(options_.max_depth_gap_s > 0))
+  if (!(options_.still_tolerance_m > 0) || !(options_.new_station_m > 0) || !(options_.max_depth_gap_s > 0) ||
+      !(options_.min_still_s >= 0))
     throw std::invalid_argument("station detector: tolerances must be > 0");
 }
 
@@ -98,28 +99,30 @@ void StationDetector::decide(const Pending& p) {
   // With depth, any valid window will do: a dynamic estimator's window while the string turns off
   // bottom is as good a station as a static one.
   if (!e.valid) return;
-  // The depth over the window: the last report at or before its start, and every report inside it.
+  // The depth over the window (or the last min_still_s before its end, if longer): the last report
+  // at or before its start, and every report inside it.
   const double gap = options_.max_depth_gap_s;
+  const double start = std::min(e.t_start, e.t_end - options_.min_still_s);
   double lo = 1e300, hi = -1e300, sd = 0;
   bool before = false, after = false, moving = false;
   std::vector<double> values;
-  const auto first = std::lower_bound(depth_.begin(), depth_.end(), e.t_start - gap,
+  const auto first = std::lower_bound(depth_.begin(), depth_.end(), start - gap,
                                       [](const DepthReport& r, double t) { return r.t_s < t; });
   for (auto it = first; it != depth_.end(); ++it) {
     const DepthReport& d = *it;
     if (d.t_s > e.t_end + gap) break;
-    if (d.t_s <= e.t_start) {
+    if (d.t_s <= start) {
       // Only the latest report before the start counts; earlier ones are superseded.
       values.clear();
       lo = 1e300, hi = -1e300, moving = false;
     }
     // Reports within `gap` of both ends: the depth is known over the whole window (a log that
     // starts with the window, at t = 0, has nothing before it).
-    if (d.t_s <= e.t_start + gap) before = true;
+    if (d.t_s <= start + gap) before = true;
     if (d.t_s >= e.t_end - gap) after = true;
     lo = std::min(lo, d.depth_m);
     hi = std::max(hi, d.depth_m);
-    moving = moving || (d.moving && d.t_s > e.t_start);
+    moving = moving || (d.moving && d.t_s > start);
     sd = std::max(sd, d.sd_m);
     values.push_back(d.depth_m);
     if (d.t_s >= e.t_end) break;

@@ -50,6 +50,22 @@ for x, y in zip(a, b):
     assert abs(float(x["inclination_deg"]) - float(y["inclination_deg"])) < 1e-6
     assert abs(float(x["magnetic_azimuth_deg"]) - float(y["magnetic_azimuth_deg"])) < 1e-6
 PY
+# The strapdown navigator's rows (1 s, at the zero-velocity updates when the string stands) serve too.
+"$bin/plumb" survey --input "$work/run/sensor.csv" --estimator strapdown --param latitude_deg=35 --param gravity=9.80665 \
+  "${ref[@]}" -o "$work/strapdown.csv" 2> /dev/null
+python3 - "$work/survey.csv" "$work/strapdown.csv" "$work/run/truth.csv" <<'PY' && pass "strapdown navigator: the same stops, QC passed, inclination within 4 sigma of the truth" || fail "strapdown survey"
+import bisect, csv, sys
+a, b = ([r for r in csv.DictReader(l for l in open(p) if not l.startswith('#'))] for p in sys.argv[1:3])
+truth = list(csv.DictReader(open(sys.argv[3])))
+ts = [float(t["t"]) for t in truth]
+assert len(a) == len(b) == 7
+for x, y in zip(a, b):
+    assert abs(float(x["md_m"]) - float(y["md_m"])) < 1e-9 and y["qc"] == "pass"
+    t = truth[min(bisect.bisect_left(ts, float(y["t"])), len(truth) - 1)]
+    # The navigator estimates the accelerometer biases the static formula cannot: within 4 of its sigmas.
+    err = abs(float(y["inclination_deg"]) - float(t["inclination_deg"]))
+    assert err < 4 * float(y["inclination_sd_deg"]), (y["t"], err, y["inclination_sd_deg"])
+PY
 if grep -q "<svg" "$work/survey.svg" && grep -q "</svg>" "$work/survey.svg"; then pass "SVG plot written"; else fail "no SVG"; fi
 if [ ! -e "$work/survey.csv.tmp" ]; then pass "no temporary file left"; else fail "survey.csv.tmp left behind"; fi
 

@@ -29,6 +29,7 @@ struct SurveyCliOptions {
   double axial_bias_sd_uT = 0;
   double still_tolerance_m = 0.02;
   double new_station_m = 0.1;
+  double min_still_s = 5;
   std::optional<double> pipe_length_m;
   double start_md_m = 0;
 };

@@ -42,6 +42,9 @@ struct DetectorOptions {
   double still_tolerance_m = 0.02;   // depth spread within a window that still counts as standing
   double new_station_m = 0.1;        // a stop closer than this to the last station is the same place
   double max_depth_gap_s = 2.0;      // a window needs depth reports this close to its start and end
+  double min_still_s = 5.0;          // the depth must stand this long before a window's end (short
+                                     // windows, e.g. a navigator's 1 s rows, at the very end of a
+                                     // slow-down would otherwise pass)
   double depth_history_s = 600;      // depth kept for windows still to come (longer windows see no depth)
   std::optional<PipeTally> tally;    // no depth input: stops from the attitude stream, depth from the tally
 };
