@@ -106,8 +106,11 @@ void StationDetector::decide(const Pending& p) {
   double lo = 1e300, hi = -1e300, sd = 0;
   bool before = false, after = false, moving = false;
   std::vector<double> values;
-  const auto first = std::lower_bound(depth_.begin(), depth_.end(), start - gap,
-                                      [](const DepthReport& r, double t) { return r.t_s < t; });
+  // A rig may report only when the depth changes: the latest report at or before the start holds
+  // however old it is.
+  auto first = std::upper_bound(depth_.begin(), depth_.end(), start,
+                                [](double t, const DepthReport& r) { return t < r.t_s; });
+  if (first != depth_.begin()) --first;
   for (auto it = first; it != depth_.end(); ++it) {
     const DepthReport& d = *it;
     if (d.t_s > e.t_end + gap) break;
@@ -116,8 +119,8 @@ void StationDetector::decide(const Pending& p) {
       values.clear();
       lo = 1e300, hi = -1e300, moving = false;
     }
-    // Reports within `gap` of both ends: the depth is known over the whole window (a log that
-    // starts with the window, at t = 0, has nothing before it).
+    // A report at or before the start (or within `gap` after it: a log that starts with the
+    // window, at t = 0, has nothing before it), and one within `gap` of the end.
     if (d.t_s <= start + gap) before = true;
     if (d.t_s >= e.t_end - gap) after = true;
     lo = std::min(lo, d.depth_m);
