@@ -45,8 +45,8 @@ void from_sensor_csv(const SurveyCommandOptions& o, survey::StationDetector& det
   std::ifstream in(o.sensor);
   if (!in) throw std::runtime_error("cannot open input '" + o.sensor + "'");
   csv::SensorReader reader(in, o.sensor);
-  if (!reader.has_depth() && !o.survey.pipe_length_m)
-    throw std::invalid_argument(o.sensor + " has no depth_m column: give --pipe-length (a pipe tally) instead");
+  if (!reader.has_depth() && !o.survey.pipe_length_m && o.survey.tally_file.empty())
+    throw std::invalid_argument(o.sensor + " has no depth_m column: give --pipe-length or --tally (a pipe tally) instead");
   for (const auto& name : runner.needing_gyro())
     if (!reader.has_gyro()) throw std::invalid_argument("estimator '" + name + "' needs gyros, and " + o.sensor + " has none");
   const auto take = [&](const estimator::Runner::Slot&, Estimate& e) { detector.add_attitude(e, ""); };
@@ -73,8 +73,8 @@ void from_sensor_csv(const SurveyCommandOptions& o, survey::StationDetector& det
 int run_survey(const SurveyCommandOptions& o) {
   const int inputs = !o.sensor.empty() + !o.attitude.empty() + !o.stations.empty();
   if (inputs != 1) throw std::invalid_argument("give exactly one of --input (sensor CSV), --attitude, --stations");
-  if (!o.attitude.empty() && o.depth.empty() && !o.survey.pipe_length_m)
-    throw std::invalid_argument("--attitude needs --depth (a depth log) or --pipe-length (a pipe tally)");
+  if (!o.attitude.empty() && o.depth.empty() && !o.survey.pipe_length_m && o.survey.tally_file.empty())
+    throw std::invalid_argument("--attitude needs --depth (a depth log), or --pipe-length or --tally (a pipe tally)");
   survey::Survey result(components::make_survey_options(o.survey));
   const Collector collect{result, o.survey.depth_sd_m};
   std::vector<std::string> notes;

@@ -4,6 +4,9 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "plumb/core/number.hpp"
+#include "plumb/csv/files.hpp"
+
 namespace plumb::components {
 
 void add_survey_options(CLI::App& app, SurveyCliOptions& o) {
@@ -44,6 +47,9 @@ void add_survey_options(CLI::App& app, SurveyCliOptions& o) {
   app.add_option("--new-station", o.new_station_m, "a stop closer than this to the last station is the same station, m")
       ->capture_default_str();
   app.add_option("--pipe-length", o.pipe_length_m, "no depth input: pipe tally, one joint of this length per stop, m");
+  app.add_option("--tally", o.tally_file, "no depth input: pipe tally CSV, one row per stop: joint_m (the joint run in "
+                                         "after that stop), optional correction_m (added to that stop's depth)")
+      ->excludes("--pipe-length");
   app.add_option("--start-md", o.start_md_m, "pipe tally: measured depth of the first stop, m")->capture_default_str();
 }
 
@@ -98,6 +104,46 @@ survey::SurveyOptions make_survey_options(const SurveyCliOptions& o) {
   return s;
 }
 
+namespace {
+
+survey::PipeTally read_tally_file(const std::string& path, double start_md_m, double sd_m) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open tally file '" + path + "'");
+  survey::PipeTally tally{start_md_m, {}, {}, sd_m};
+  std::string line;
+  std::size_t n = 0;
+  int joint = -1, correction = -1;
+  while (std::getline(in, line)) {
+    ++n;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line[0] == '#') continue;
+    const auto fields = csv::split_line(line);
+    const std::string where = path + ":" + std::to_string(n) + ": ";
+    if (joint < 0) {
+      for (std::size_t i = 0; i < fields.size(); ++i) {
+        if (fields[i] == "joint_m") joint = static_cast<int>(i);
+        if (fields[i] == "correction_m") correction = static_cast<int>(i);
+      }
+      if (joint < 0) throw std::runtime_error(where + "no column 'joint_m' in the header");
+      continue;
+    }
+    const auto value = [&](int column, const char* name) {
+      const std::string text = static_cast<std::size_t>(column) < fields.size() ? fields[static_cast<std::size_t>(column)] : "";
+      const auto v = parse_number(text);
+      if (!v) throw std::runtime_error(where + "column '" + name + "': bad number '" + text + "'");
+      return *v;
+    };
+    const double j = value(joint, "joint_m");
+    if (!(j > 0)) throw std::runtime_error(where + "joint_m must be > 0");
+    tally.joint_lengths_m.push_back(j);
+    tally.corrections_m.push_back(correction >= 0 ? value(correction, "correction_m") : 0.0);
+  }
+  if (tally.joint_lengths_m.empty()) throw std::runtime_error(path + ": no tally rows");
+  return tally;
+}
+
+}  // namespace
+
 survey::DetectorOptions make_detector_options(const SurveyCliOptions& o) {
   survey::DetectorOptions d;
   d.still_tolerance_m = o.still_tolerance_m;
@@ -110,6 +156,7 @@ survey::DetectorOptions make_detector_options(const SurveyCliOptions& o) {
     if (!(*o.pipe_length_m > 0)) throw std::invalid_argument("--pipe-length must be > 0");
     d.tally = survey::PipeTally{o.start_md_m, {*o.pipe_length_m}, {}, std::max(0.0, o.depth_sd_m)};
   }
+  if (!o.tally_file.empty()) d.tally = read_tally_file(o.tally_file, o.start_md_m, std::max(0.0, o.depth_sd_m));
   return d;
 }
 

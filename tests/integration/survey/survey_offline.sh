@@ -66,6 +66,16 @@ for x, y in zip(a, b):
     err = abs(float(y["inclination_deg"]) - float(t["inclination_deg"]))
     assert err < 4 * float(y["inclination_sd_deg"]), (y["t"], err, y["inclination_sd_deg"])
 PY
+# No depth at all: a pipe tally numbers the stops (valid, non-rotating windows); corrections per stop.
+printf 'joint_m,correction_m\n1.5,0\n1.5,0.01\n1.5,0\n1.5,0\n1.5,-0.02\n1.5,0\n1.5,0\n' > "$work/tally.csv"
+"$bin/plumb" survey --attitude "$work/att.csv" --tally "$work/tally.csv" --start-md 100 "${ref[@]}" -o "$work/tally_survey.csv" 2> /dev/null
+python3 - "$work/tally_survey.csv" <<'PY' && pass "pipe tally: stops at start + joints + corrections" || fail "pipe tally survey"
+import csv, sys
+rows = [r for r in csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith('#'))]
+want = [100, 101.51, 103, 104.5, 105.98, 107.5, 109]
+got = [float(r["md_m"]) for r in rows]
+assert len(got) == 7 and all(abs(g - w) < 1e-9 for g, w in zip(got, want)), got
+PY
 if grep -q "<svg" "$work/survey.svg" && grep -q "</svg>" "$work/survey.svg"; then pass "SVG plot written"; else fail "no SVG"; fi
 if [ ! -e "$work/survey.csv.tmp" ]; then pass "no temporary file left"; else fail "survey.csv.tmp left behind"; fi
 

@@ -31,6 +31,7 @@ struct SurveyCliOptions {
   double new_station_m = 0.1;
   double min_still_s = 5;
   std::optional<double> pipe_length_m;
+  std::string tally_file;  // per stop: joint_m (run in after it), correction_m (added to its depth)
   double start_md_m = 0;
 };
 
@@ -40,6 +41,7 @@ void add_survey_options(CLI::App& app, SurveyCliOptions& o);
 // without declination, or no reference field for a check that is not skipped; std::runtime_error
 // for an unreadable reference file.
 survey::SurveyOptions make_survey_options(const SurveyCliOptions& o);
+// Throws std::invalid_argument for bad values, std::runtime_error for an unreadable tally file.
 survey::DetectorOptions make_detector_options(const SurveyCliOptions& o);
 
 }  // namespace plumb::components
