@@ -40,6 +40,9 @@ void add_survey_options(CLI::App& app, SurveyCliOptions& o) {
   app.add_option("--axial-bias-sd", o.axial_bias_sd_uT, "axial magnetometer bias / drill-string interference "
                                                         "uncertainty, uT (systematic term AMIL)")
       ->capture_default_str();
+  app.add_option("--axial-accel-bias-sd", o.axial_accel_bias_sd, "axial accelerometer bias uncertainty, m/s^2 "
+                                                                   "(systematic term ABZ)")
+      ->capture_default_str();
   app.add_option("--still-tolerance", o.still_tolerance_m, "depth change within a window that still counts as a stop, m")
       ->capture_default_str();
   app.add_option("--min-still", o.min_still_s, "the depth must have stood this long before a window's end, s")
@@ -97,10 +100,12 @@ survey::SurveyOptions make_survey_options(const SurveyCliOptions& o) {
   if (o.tol_dip) s.tolerances.dip_deg = *o.tol_dip;
   s.section_azimuth_deg = o.section_azimuth_deg;
   if (o.tie_in.size() == 3) s.tie_in = Eigen::Vector3d(o.tie_in[0], o.tie_in[1], o.tie_in[2]);
-  if (!(o.depth_scale_sd >= 0) || !(o.axial_bias_sd_uT >= 0) || !(o.declination_sd_deg >= 0))
-    throw std::invalid_argument("--declination-sd, --depth-scale-sd and --axial-bias-sd must be >= 0");
+  if (!(o.depth_scale_sd >= 0) || !(o.axial_bias_sd_uT >= 0) || !(o.declination_sd_deg >= 0) ||
+      !(o.axial_accel_bias_sd >= 0))
+    throw std::invalid_argument("--declination-sd, --depth-scale-sd, --axial-bias-sd and --axial-accel-bias-sd must be >= 0");
   s.errors.depth_scale_sd = o.depth_scale_sd;
   s.errors.axial_bias_sd_uT = o.axial_bias_sd_uT;
+  s.errors.axial_accel_bias_sd_mps2 = o.axial_accel_bias_sd;
   return s;
 }
 

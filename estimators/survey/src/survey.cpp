@@ -34,6 +34,7 @@ Survey::Survey(SurveyOptions o) : options_(std::move(o)) {
       options_.reference == AzimuthReference::Magnetic ? 0.0 : options_.north.declination_sd_deg;
   if (options_.field.total_b_uT) options_.errors.total_b_uT = *options_.field.total_b_uT;
   if (options_.field.dip_deg) options_.errors.dip_deg = *options_.field.dip_deg;
+  if (options_.field.gravity_mps2) options_.errors.gravity_mps2 = *options_.field.gravity_mps2;
 }
 
 const SurveyRow& Survey::add(const Station& s) {

@@ -1,5 +1,6 @@
 #include "plumb/survey/uncertainty.hpp"
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -34,18 +35,37 @@ void course_jacobians(const StationGeometry& a, const StationGeometry& b, Jacobi
 }
 
 // Systematic sources: their change of (md, inc, azi) at one station.
-constexpr int kSystematic = 3;
+constexpr int kSystematic = 4;  // DEC, DSF, AMIL, ABZ
+
+// ABZ: how the closed-form attitude (CONVENTIONS.md) moves with a bias on the axial accelerometer,
+// at this station's attitude in the reference field (central difference; the effect does not
+// depend on the toolface, the bias lying on the axis the tool turns about).
+Eigen::Vector3d axial_accelerometer_weight(const StationGeometry& s, const StationSigma& sigma, const ErrorModel& m) {
+  if (m.axial_accel_bias_sd_mps2 == 0) return Eigen::Vector3d::Zero();
+  const double inc = s.inclination_deg * kDeg, az = sigma.magnetic_azimuth_deg * kDeg;
+  const Eigen::Vector3d G = gravity_tool(inc, 0, m.gravity_mps2);
+  const Eigen::Vector3d B = field_tool(inc, az, 0, m.total_b_uT, m.dip_deg * kDeg);
+  const double h = 1e-4 * m.gravity_mps2;
+  const ClosedForm up = closed_form_attitude(G + Eigen::Vector3d(0, 0, h), B);
+  const ClosedForm down = closed_form_attitude(G - Eigen::Vector3d(0, 0, h), B);
+  const double d_inc = (up.inclination_deg - down.inclination_deg) / (2 * h) * kDeg;
+  // Near vertical the azimuth is ill-conditioned: its share is left out rather than blown up.
+  const double d_az = std::sin(inc) > 1e-3 ? wrap_deg_180(up.azimuth_deg - down.azimuth_deg) / (2 * h) * kDeg : 0.0;
+  return {0, d_inc * m.axial_accel_bias_sd_mps2, d_az * m.axial_accel_bias_sd_mps2};
+}
+
 Eigen::Vector3d systematic_weight(int source, const StationGeometry& s, const StationSigma& sigma, const ErrorModel& m) {
   switch (source) {
     case 0: return {0, 0, m.declination_sd_deg * kDeg};
     case 1: return {s.md_m * m.depth_scale_sd, 0, 0};
-    default: {
+    case 2: {
       const double horizontal = m.total_b_uT * std::cos(m.dip_deg * kDeg);
       if (m.axial_bias_sd_uT == 0 || horizontal <= 0) return Eigen::Vector3d::Zero();
       return {0, 0,
               m.axial_bias_sd_uT * std::sin(s.inclination_deg * kDeg) * std::sin(sigma.magnetic_azimuth_deg * kDeg) /
                   horizontal};
     }
+    default: return axial_accelerometer_weight(s, sigma, m);
   }
 }
 
@@ -87,8 +107,8 @@ std::vector<PositionUncertainty> propagate_uncertainty(const std::vector<Station
   }
   // Sums over the stations above k, whose courses on both sides are in the path to k.
   Eigen::Matrix3d random_above = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d systematic_above[kSystematic] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
-                                                  Eigen::Vector3d::Zero()};
+  std::array<Eigen::Vector3d, kSystematic> systematic_above;
+  systematic_above.fill(Eigen::Vector3d::Zero());
   for (std::size_t k = 1; k < n; ++k) {
     // Station k-1 is now fully above k: both its courses lie on the path to k.
     const Jacobian full = d_end[k - 1] + d_start[k - 1];

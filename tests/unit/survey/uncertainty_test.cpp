@@ -10,6 +10,7 @@
 #include "plumb/core/attitude.hpp"
 #include "plumb/survey/uncertainty.hpp"
 
+
 namespace plumb::survey {
 namespace {
 
@@ -47,6 +48,31 @@ TEST(Uncertainty, DepthScaleStretchesThePath) {
   const auto u = propagate_uncertainty(s, std::vector<StationSigma>(s.size()), m);
   const Eigen::Vector3d v = m.depth_scale_sd * end_of(s);
   EXPECT_LT((u.back().covariance - v * v.transpose()).norm(), 1e-8 * v.squaredNorm());
+}
+
+// ABZ: a bias b on the axial accelerometer, put through the closed-form attitude at every station
+// (G and B from the frames of CONVENTIONS.md, b added to Gz), moves the end of the path by a vector
+// v b; the propagation must report sigma^2 v v^T for that term. Also the textbook inclination
+// sensitivity: I = atan2(g sinI, g cosI + b) gives dI/db = -sinI/g.
+TEST(Uncertainty, AxialAccelerometerBiasMatchesTheClosedForm) {
+  const auto s = build_and_turn();
+  ErrorModel m;
+  m.axial_accel_bias_sd_mps2 = 0.003;
+  std::vector<StationSigma> sigma;
+  for (const auto& st : s) sigma.push_back({0, 0, 0, st.azimuth_deg});
+  const auto u = propagate_uncertainty(s, sigma, m);
+  const double b = 1e-4;
+  auto biased = s;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const double inc = s[k].inclination_deg * kDeg, az = s[k].azimuth_deg * kDeg, tf = (37.0 * k) * kDeg;
+    const Eigen::Vector3d G = gravity_tool(inc, tf, m.gravity_mps2) + Eigen::Vector3d(0, 0, b);
+    const ClosedForm r = closed_form_attitude(G, field_tool(inc, az, tf, m.total_b_uT, m.dip_deg * kDeg));
+    biased[k].inclination_deg = r.inclination_deg;
+    biased[k].azimuth_deg = r.azimuth_deg;
+    EXPECT_NEAR((r.inclination_deg - s[k].inclination_deg) * kDeg, -std::sin(inc) / m.gravity_mps2 * b, 1e-3 * b);
+  }
+  const Eigen::Vector3d v = (end_of(biased) - end_of(s)) / b * m.axial_accel_bias_sd_mps2;
+  EXPECT_LT((u.back().covariance - v * v.transpose()).norm(), 1e-3 * v.squaredNorm());
 }
 
 TEST(Uncertainty, FirstStationHasNoneAndTheEllipseDescribesTheCovariance) {

@@ -27,6 +27,7 @@ struct SurveyCliOptions {
   double depth_sd_m = -1;      // < 0: what the depth input says
   double depth_scale_sd = 0;
   double axial_bias_sd_uT = 0;
+  double axial_accel_bias_sd = 0;
   double still_tolerance_m = 0.02;
   double new_station_m = 0.1;
   double min_still_s = 5;

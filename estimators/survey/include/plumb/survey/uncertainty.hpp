@@ -10,10 +10,13 @@
 //   systematic:          DEC  declination uncertainty (true and grid azimuths only),
 //                        DSF  depth scale factor (relative),
 //                        AMIL axial magnetic interference / axial magnetometer bias (uT): azimuth
-//                             change b sinI sinA / (B cos dip).
-// Not in: the accelerometer and magnetometer bias and scale-factor terms of the full MWD model (the
-// estimators' sigma covers noise, not calibration residuals), misalignment (SAG, MX, MY), and
-// the depth terms DREF/DST: give them as per-station depth sigma if they matter.
+//                             change b sinI sinA / (B cos dip),
+//                        ABZ  axial accelerometer bias (m/s^2): inclination and azimuth change from
+//                             the closed-form attitude's own sensitivity (dI = -sinI b / g).
+// Not in: the radial (x, y) accelerometer and magnetometer biases and the scale-factor terms of the
+// full MWD model (they depend on each station's toolface; the estimators' sigma covers noise, not
+// calibration residuals), misalignment (SAG, MX, MY), and the depth terms DREF/DST: give them as
+// per-station depth sigma if they matter.
 #pragma once
 
 #include <vector>
@@ -35,8 +38,10 @@ struct ErrorModel {
   double declination_sd_deg = 0;   // DEC (0 for a magnetic survey: the reference is magnetic north itself)
   double depth_scale_sd = 0;       // DSF, relative (e.g. 2e-4)
   double axial_bias_sd_uT = 0;     // AMIL
-  double total_b_uT = 50;          // reference field for AMIL's weighting
+  double axial_accel_bias_sd_mps2 = 0;  // ABZ
+  double total_b_uT = 50;          // reference field for AMIL's and ABZ's weighting
   double dip_deg = 60;
+  double gravity_mps2 = 9.80665;
 };
 
 // The factor that turns 1-sigma semi-axes of a 2-D normal into its 95 % ellipse: sqrt(chi2_2(0.95))
