@@ -13,6 +13,7 @@ void add_record_command(CLI::App& app);      // record (topics into an MCAP file
 void add_play_command(CLI::App& app);        // play (an MCAP recording back onto the topics)
 void add_info_command(CLI::App& app);        // info (what a recording holds)
 void add_export_command(CLI::App& app);      // export (a recorded topic as CSV)
+void add_survey_command(CLI::App& app);      // survey (offline: stations, QC, minimum curvature, uncertainty)
 
 // Set by a subcommand's callback: the process exit code.
 extern int g_exit_code;

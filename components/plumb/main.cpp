@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   plumb::cli::add_play_command(app);
   plumb::cli::add_info_command(app);
   plumb::cli::add_export_command(app);
+  plumb::cli::add_survey_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -12,6 +12,13 @@ QosPtr make_endpoint_qos(const Qos& qos) {
                                                                               : DDS_DURABILITY_VOLATILE);
   dds_qset_history(q.get(), qos.history == History::KeepAll ? DDS_HISTORY_KEEP_ALL : DDS_HISTORY_KEEP_LAST,
                    qos.depth > 0 ? qos.depth : 1);
+  // What a transient-local writer keeps for late joiners is Cyclone's durability-service history,
+  // KEEP_LAST 1 by default whatever the writer's own history: without this a keep-all topic (the
+  // survey) would give a late joiner its last sample only.
+  if (qos.durability == Durability::TransientLocal)
+    dds_qset_durability_service(q.get(), 0, qos.history == History::KeepAll ? DDS_HISTORY_KEEP_ALL : DDS_HISTORY_KEEP_LAST,
+                                qos.depth > 0 ? qos.depth : 1, DDS_LENGTH_UNLIMITED, DDS_LENGTH_UNLIMITED,
+                                DDS_LENGTH_UNLIMITED);
   // Cyclone 0.10 would pick XCDR2 for some types; Fast DDS 2.9 only reads XCDR1 (ARCHITECTURE.md).
   const dds_data_representation_id_t xcdr1[] = {DDS_DATA_REPRESENTATION_XCDR1};
   dds_qset_data_representation(q.get(), 1, xcdr1);

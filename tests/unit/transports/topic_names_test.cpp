@@ -41,6 +41,17 @@ TEST(TopicNames, NavigatorTopicsAreDeclaredInTheIdl) {
   }
 }
 
+// Issue 11: the survey of a tool is kept whole for late joiners.
+TEST(TopicNames, SurveyTopicKeepsEveryStationForLateJoiners) {
+  EXPECT_EQ(names::survey("drill"), "plumb/survey/drill");
+  EXPECT_TRUE(carries(names::survey("drill"), type<topics::SurveyStation>()));
+  const Qos qos = default_qos_for_topic(names::survey("drill"));
+  EXPECT_EQ(qos.reliability, Reliability::Reliable);
+  EXPECT_EQ(qos.durability, Durability::TransientLocal);
+  EXPECT_EQ(qos.history, History::KeepAll);
+  EXPECT_STREQ(type<topics::SurveyStation>()->type_name, "plumb::msg::SurveyStation");
+}
+
 TEST(TopicNames, AttitudeTopicNamesTheEstimator) {
   EXPECT_EQ(names::attitude("static"), "plumb/attitude/static");
 }

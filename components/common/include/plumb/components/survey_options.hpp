@@ -1,0 +1,48 @@
+// The survey's options on the command line, the same for `plumb survey` (offline) and plumb-survey
+// (live): azimuth reference and north corrections, reference field and QC tolerances, the error
+// model's systematic terms, the vertical-section azimuth and tie-in, and the station detector.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "plumb/survey/station_detector.hpp"
+#include "plumb/survey/survey.hpp"
+
+namespace plumb::components {
+
+struct SurveyCliOptions {
+  std::string reference = "magnetic";
+  std::optional<double> declination_deg, convergence_deg;
+  double declination_sd_deg = 0;
+  std::optional<double> gravity, total_field, dip;
+  std::string reference_file;
+  std::optional<double> tol_gravity, tol_field, tol_dip;
+  std::vector<std::string> skip_checks;
+  double section_azimuth_deg = 0;
+  std::vector<double> tie_in;  // north,east,tvd
+  double depth_sd_m = -1;      // < 0: what the depth input says
+  double depth_scale_sd = 0;
+  double axial_bias_sd_uT = 0;
+  double axial_accel_bias_sd = 0;
+  double still_tolerance_m = 0.02;
+  double new_station_m = 0.1;
+  double min_still_s = 5;
+  std::optional<double> pipe_length_m;
+  std::string tally_file;  // per stop: joint_m (run in after it), correction_m (added to its depth)
+  double start_md_m = 0;
+};
+
+void add_survey_options(CLI::App& app, SurveyCliOptions& o);
+
+// Throws std::invalid_argument (a usage error) for options that cannot work, e.g. a true survey
+// without declination, or no reference field for a check that is not skipped; std::runtime_error
+// for an unreadable reference file.
+survey::SurveyOptions make_survey_options(const SurveyCliOptions& o);
+// Throws std::invalid_argument for bad values, std::runtime_error for an unreadable tally file.
+survey::DetectorOptions make_detector_options(const SurveyCliOptions& o);
+
+}  // namespace plumb::components

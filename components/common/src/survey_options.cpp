@@ -1,0 +1,168 @@
+#include "plumb/components/survey_options.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+#include "plumb/core/number.hpp"
+#include "plumb/csv/files.hpp"
+
+namespace plumb::components {
+
+void add_survey_options(CLI::App& app, SurveyCliOptions& o) {
+  app.add_option("--reference", o.reference, "azimuth reference of the survey: magnetic, true (needs --declination) or "
+                                             "grid (needs --declination and --convergence)")
+      ->check(CLI::IsMember({"magnetic", "true", "grid"}))
+      ->capture_default_str();
+  app.add_option("--declination", o.declination_deg, "magnetic declination, deg, east positive (true = magnetic + declination)");
+  app.add_option("--declination-sd", o.declination_sd_deg, "declination uncertainty, deg (systematic term DEC)")->capture_default_str();
+  app.add_option("--convergence", o.convergence_deg, "grid convergence, deg, grid north east of true north positive "
+                                                     "(grid = true - convergence)");
+  app.add_option("--gravity", o.gravity, "reference local gravity, m/s^2 (QC of |G|)");
+  app.add_option("--total-field", o.total_field, "reference total field, uT (QC of |B|)");
+  app.add_option("--dip", o.dip, "reference dip, deg, down positive (QC of dip)");
+  app.add_option("--reference-file", o.reference_file, "reference field file: lines `gravity_mps2 V`, `total_b_uT V`, "
+                                                       "`dip_deg V`, `declination_deg V` (options given win)");
+  app.add_option("--tol-gravity", o.tol_gravity, "QC tolerance on |G|, m/s^2 (default 0.003 g = 0.0294)");
+  app.add_option("--tol-field", o.tol_field, "QC tolerance on |B|, uT (default 0.3 = 300 nT)");
+  app.add_option("--tol-dip", o.tol_dip, "QC tolerance on dip, deg (default 0.25)");
+  app.add_option("--skip-check", o.skip_checks, "QC check not to run: gravity, field or dip (repeatable)")
+      ->check(CLI::IsMember({"gravity", "field", "dip"}));
+  app.add_option("--section-azimuth", o.section_azimuth_deg, "vertical-section azimuth, deg, in the survey's reference")
+      ->capture_default_str();
+  app.add_option("--tie-in", o.tie_in, "position of the first station: NORTH,EAST,TVD in m (default 0,0,0)")
+      ->delimiter(',')
+      ->expected(3);
+  app.add_option("--depth-sd", o.depth_sd_m, "standard deviation of each station's measured depth, m (default: what the "
+                                             "depth input reports, or 0)");
+  app.add_option("--depth-scale-sd", o.depth_scale_sd, "depth scale factor uncertainty, relative (systematic term DSF)")
+      ->capture_default_str();
+  app.add_option("--axial-bias-sd", o.axial_bias_sd_uT, "axial magnetometer bias / drill-string interference "
+                                                        "uncertainty, uT (systematic term AMIL)")
+      ->capture_default_str();
+  app.add_option("--axial-accel-bias-sd", o.axial_accel_bias_sd, "axial accelerometer bias uncertainty, m/s^2 "
+                                                                   "(systematic term ABZ)")
+      ->capture_default_str();
+  app.add_option("--still-tolerance", o.still_tolerance_m, "depth change within a window that still counts as a stop, m")
+      ->capture_default_str();
+  app.add_option("--min-still", o.min_still_s, "the depth must have stood this long before a window's end, s")
+      ->capture_default_str();
+  app.add_option("--new-station", o.new_station_m, "a stop closer than this to the last station is the same station, m")
+      ->capture_default_str();
+  app.add_option("--pipe-length", o.pipe_length_m, "no depth input: pipe tally, one joint of this length per stop, m");
+  app.add_option("--tally", o.tally_file, "no depth input: pipe tally CSV, one row per stop: joint_m (the joint run in "
+                                         "after that stop), optional correction_m (added to that stop's depth)")
+      ->excludes("--pipe-length");
+  app.add_option("--start-md", o.start_md_m, "pipe tally: measured depth of the first stop, m")->capture_default_str();
+}
+
+survey::SurveyOptions make_survey_options(const SurveyCliOptions& o) {
+  survey::SurveyOptions s;
+  s.reference = *survey::parse_azimuth_reference(o.reference);
+  if (!o.reference_file.empty()) {
+    std::ifstream in(o.reference_file);
+    if (!in) throw std::runtime_error("cannot open reference file '" + o.reference_file + "'");
+    s.field = survey::read_reference_file(in, o.reference_file);
+  }
+  if (o.gravity) s.field.gravity_mps2 = *o.gravity;
+  if (o.total_field) s.field.total_b_uT = *o.total_field;
+  if (o.dip) s.field.dip_deg = *o.dip;
+  if (o.declination_deg) s.field.declination_deg = *o.declination_deg;
+  if (s.field.declination_deg) {
+    s.north.declination_deg = *s.field.declination_deg;
+    s.north.declination_known = true;
+  }
+  if (o.convergence_deg) {
+    s.north.convergence_deg = *o.convergence_deg;
+    s.north.convergence_known = true;
+  }
+  s.north.declination_sd_deg = o.declination_sd_deg;
+  if (s.reference != survey::AzimuthReference::Magnetic && !s.north.declination_known)
+    throw std::invalid_argument("--reference " + o.reference + " needs --declination (or declination_deg in --reference-file)");
+  if (s.reference == survey::AzimuthReference::Grid && !s.north.convergence_known)
+    throw std::invalid_argument("--reference grid needs --convergence");
+  for (const auto& c : o.skip_checks) {
+    if (c == "gravity") s.checks.gravity = false;
+    if (c == "field") s.checks.total_b = false;
+    if (c == "dip") s.checks.dip = false;
+  }
+  // A check without its reference value would fail every station: say so now, once.
+  const auto need = [&](bool check, const auto& value, const char* option, const char* name) {
+    if (check && !value)
+      throw std::invalid_argument(std::string("missing reference ") + name + ": give " + option +
+                                  " or --reference-file, or --skip-check to survey without that QC");
+  };
+  need(s.checks.gravity, s.field.gravity_mps2, "--gravity", "gravity");
+  need(s.checks.total_b, s.field.total_b_uT, "--total-field", "total field");
+  need(s.checks.dip, s.field.dip_deg, "--dip", "dip");
+  if (o.tol_gravity) s.tolerances.gravity_mps2 = *o.tol_gravity;
+  if (o.tol_field) s.tolerances.total_b_uT = *o.tol_field;
+  if (o.tol_dip) s.tolerances.dip_deg = *o.tol_dip;
+  s.section_azimuth_deg = o.section_azimuth_deg;
+  if (o.tie_in.size() == 3) s.tie_in = Eigen::Vector3d(o.tie_in[0], o.tie_in[1], o.tie_in[2]);
+  if (!(o.depth_scale_sd >= 0) || !(o.axial_bias_sd_uT >= 0) || !(o.declination_sd_deg >= 0) ||
+      !(o.axial_accel_bias_sd >= 0))
+    throw std::invalid_argument("--declination-sd, --depth-scale-sd, --axial-bias-sd and --axial-accel-bias-sd must be >= 0");
+  s.errors.depth_scale_sd = o.depth_scale_sd;
+  s.errors.axial_bias_sd_uT = o.axial_bias_sd_uT;
+  s.errors.axial_accel_bias_sd_mps2 = o.axial_accel_bias_sd;
+  return s;
+}
+
+namespace {
+
+survey::PipeTally read_tally_file(const std::string& path, double start_md_m, double sd_m) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open tally file '" + path + "'");
+  survey::PipeTally tally{start_md_m, {}, {}, sd_m};
+  std::string line;
+  std::size_t n = 0;
+  int joint = -1, correction = -1;
+  while (std::getline(in, line)) {
+    ++n;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line[0] == '#') continue;
+    const auto fields = csv::split_line(line);
+    const std::string where = path + ":" + std::to_string(n) + ": ";
+    if (joint < 0) {
+      for (std::size_t i = 0; i < fields.size(); ++i) {
+        if (fields[i] == "joint_m") joint = static_cast<int>(i);
+        if (fields[i] == "correction_m") correction = static_cast<int>(i);
+      }
+      if (joint < 0) throw std::runtime_error(where + "no column 'joint_m' in the header");
+      continue;
+    }
+    const auto value = [&](int column, const char* name) {
+      const std::string text = static_cast<std::size_t>(column) < fields.size() ? fields[static_cast<std::size_t>(column)] : "";
+      const auto v = parse_number(text);
+      if (!v) throw std::runtime_error(where + "column '" + name + "': bad number '" + text + "'");
+      return *v;
+    };
+    const double j = value(joint, "joint_m");
+    if (!(j > 0)) throw std::runtime_error(where + "joint_m must be > 0");
+    tally.joint_lengths_m.push_back(j);
+    tally.corrections_m.push_back(correction >= 0 ? value(correction, "correction_m") : 0.0);
+  }
+  if (tally.joint_lengths_m.empty()) throw std::runtime_error(path + ": no tally rows");
+  return tally;
+}
+
+}  // namespace
+
+survey::DetectorOptions make_detector_options(const SurveyCliOptions& o) {
+  survey::DetectorOptions d;
+  d.still_tolerance_m = o.still_tolerance_m;
+  d.new_station_m = o.new_station_m;
+  d.min_still_s = o.min_still_s;
+  if (!(d.min_still_s >= 0)) throw std::invalid_argument("--min-still must be >= 0");
+  if (!(d.still_tolerance_m > 0) || !(d.new_station_m > 0))
+    throw std::invalid_argument("--still-tolerance and --new-station must be > 0");
+  if (o.pipe_length_m) {
+    if (!(*o.pipe_length_m > 0)) throw std::invalid_argument("--pipe-length must be > 0");
+    d.tally = survey::PipeTally{o.start_md_m, {*o.pipe_length_m}, {}, std::max(0.0, o.depth_sd_m)};
+  }
+  if (!o.tally_file.empty()) d.tally = read_tally_file(o.tally_file, o.start_md_m, std::max(0.0, o.depth_sd_m));
+  return d;
+}
+
+}  // namespace plumb::components

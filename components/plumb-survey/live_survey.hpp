@@ -1,0 +1,27 @@
+// plumb-survey's loop: attitude and depth topics in, stations detected, quality-checked, placed
+// by minimum curvature, written to the survey file (fsync'ed) and only then published.
+#pragma once
+
+#include <string>
+
+#include "plumb/components/cli.hpp"
+#include "plumb/components/survey_options.hpp"
+
+namespace plumb::survey_component {
+
+struct LiveOptions {
+  components::TransportOptions transport;
+  components::SurveyCliOptions survey;
+  std::string estimator = "static";  // reads plumb/attitude/<estimator>
+  std::string attitude_topic;        // overrides the estimator's topic
+  std::string tool_id;               // the tool surveyed: its attitude and depth; names plumb/survey/<tool>
+  std::string file;                  // the survey file (required)
+  int count = 0;                     // exit once the survey holds this many stations (0: run until stopped)
+  double timeout_s = 0;              // fail if --count is not reached in time
+  double linger_s = 1;
+  bool quiet = false;
+};
+
+int run_live_survey(const LiveOptions& options);
+
+}  // namespace plumb::survey_component

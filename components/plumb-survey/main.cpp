@@ -1,0 +1,31 @@
+// plumb-survey: the survey, live. Reads one tool's attitude (plumb/attitude/<estimator>) and the
+// rig's measured depth (plumb/depth), takes a station at every stop, checks it against the
+// reference field, places it by minimum curvature with its uncertainty, keeps it in the survey file
+// and publishes it on plumb/survey/<tool> (reliable, transient-local, keep-all: late joiners get
+// every station). Restarted, it resumes from the file. docs/surveys.md.
+#include "live_survey.hpp"
+
+int main(int argc, char** argv) {
+  using namespace plumb;
+  survey_component::LiveOptions o;
+  CLI::App app{"plumb-survey: survey stations live from an attitude topic and plumb/depth; publishes plumb/survey/<tool> "
+               "and keeps the survey in a file across restarts"};
+  app.name("plumb-survey");
+  components::add_transport_options(app, o.transport);
+  app.add_option("--tool-id", o.tool_id, "tool surveyed (its attitude and depth messages); names plumb/survey/<tool>")->required();
+  app.add_option("--file", o.file, "survey file (docs/surveys.md): resumed from at start, one fsync'ed row per station")->required();
+  app.add_option("-p,--plugin,--estimator", o.estimator, "estimator whose attitude to read (plumb/attitude/<plugin>)")
+      ->capture_default_str();
+  app.add_option("--attitude-topic", o.attitude_topic, "attitude topic to read instead of plumb/attitude/<plugin>");
+  components::add_survey_options(app, o.survey);
+  app.add_option("--count", o.count, "exit once the survey holds this many stations (0: run until stopped)");
+  app.add_option("--timeout", o.timeout_s, "exit with an error if --count is not reached within this many seconds");
+  app.add_option("--linger", o.linger_s, "seconds to stay after --count so that readers get the last station")->capture_default_str();
+  app.add_flag("-q,--quiet", o.quiet, "do not print each station");
+  if (const int status = components::parse_command_line(app, argc, argv); status >= 0) return status;
+  try {
+    return survey_component::run_live_survey(o);
+  } catch (const std::exception& e) {
+    return components::exit_on_error("plumb-survey", e);
+  }
+}

@@ -1,0 +1,88 @@
+#include "station_message.hpp"
+
+#include <cmath>
+
+#include "plumb/components/convert.hpp"
+
+namespace plumb::survey_component {
+
+using components::bounded;
+
+topics::SurveyStation to_topic(const survey::SurveyRow& r) {
+  topics::SurveyStation m;
+  const auto& s = r.station;
+  m.tool_id = bounded(s.tool_id, topics::SurveyStation::kToolIdMax);
+  m.source = bounded(s.source, topics::SurveyStation::kSourceMax);
+  m.index = r.index;
+  m.stamp_ns = components::seconds_to_ns(s.t_s);
+  m.md_m = s.md_m;
+  m.md_sd_m = s.md_sd_m;
+  m.inclination_deg = s.inclination_deg;
+  m.inclination_sd_deg = s.inclination_sd_deg;
+  m.azimuth_deg = r.azimuth_deg;
+  m.azimuth_sd_deg = s.azimuth_sd_deg;
+  m.magnetic_azimuth_deg = s.magnetic_azimuth_deg;
+  m.azimuth_reference = survey::to_string(r.reference);
+  m.north_m = r.point.north_m;
+  m.east_m = r.point.east_m;
+  m.tvd_m = r.point.tvd_m;
+  m.dogleg_deg = r.point.dogleg_deg;
+  m.dls_deg_per_30m = r.point.dls_deg_per_30m;
+  m.vertical_section_m = r.point.vertical_section_m;
+  m.closure_distance_m = r.point.closure_distance_m;
+  m.closure_azimuth_deg = r.point.closure_azimuth_deg;
+  m.north_sd_m = r.uncertainty.north_sd_m;
+  m.east_sd_m = r.uncertainty.east_sd_m;
+  m.tvd_sd_m = r.uncertainty.tvd_sd_m;
+  m.ellipse_major_sd_m = r.uncertainty.major_sd_m;
+  m.ellipse_minor_sd_m = r.uncertainty.minor_sd_m;
+  m.ellipse_major_azimuth_deg = r.uncertainty.major_azimuth_deg;
+  // NaN (not measured) travels as 0, the topics' "unknown".
+  const auto known = [](double v) { return std::isfinite(v) ? v : 0.0; };
+  m.total_g = known(s.total_g_mps2);
+  m.total_b = known(s.total_b_uT);
+  m.dip_deg = known(s.dip_deg);
+  m.g_residual = r.qc.gravity_residual_mps2;
+  m.b_residual = r.qc.total_b_residual_uT;
+  m.dip_residual_deg = r.qc.dip_residual_deg;
+  m.flags = (r.qc.pass ? topics::SURVEY_QC_PASSED : 0u) | (s.azimuth_valid ? topics::SURVEY_AZIMUTH_VALID : 0u);
+  m.qc_reason = bounded(r.qc.reason, topics::SurveyStation::kQcReasonMax);
+  return m;
+}
+
+Estimate from_topic(const topics::Attitude& a) {
+  Estimate e;
+  e.estimator = a.estimator;
+  e.t_start = components::ns_to_seconds(a.window_start_ns);
+  e.t_end = components::ns_to_seconds(a.window_end_ns);
+  e.inclination_deg = a.inclination_deg;
+  e.azimuth_deg = a.azimuth_deg;
+  e.gravity_toolface_deg = a.gravity_toolface_deg;
+  e.magnetic_toolface_deg = a.magnetic_toolface_deg;
+  e.rpm = a.rpm;
+  e.inclination_sd_deg = a.inclination_sd_deg;
+  e.azimuth_sd_deg = a.azimuth_sd_deg;
+  e.toolface_sd_deg = a.toolface_sd_deg;
+  e.dip_deg = a.dip_deg;
+  e.total_g = a.total_g;
+  e.total_b = a.total_b;
+  e.samples_used = a.samples_used;
+  e.valid = (a.flags & topics::ATTITUDE_VALID) != 0;
+  e.azimuth_valid = (a.flags & topics::ATTITUDE_AZIMUTH_VALID) != 0;
+  e.toolface_valid = (a.flags & topics::ATTITUDE_TOOLFACE_VALID) != 0;
+  e.rotating = (a.flags & topics::ATTITUDE_ROTATING) != 0;
+  e.partial_window = (a.flags & topics::ATTITUDE_PARTIAL_WINDOW) != 0;
+  e.reason = a.reason;
+  return e;
+}
+
+survey::DepthReport from_topic(const topics::MeasuredDepth& d) {
+  survey::DepthReport r;
+  r.t_s = components::ns_to_seconds(d.stamp_ns);
+  r.depth_m = d.depth_m;
+  r.sd_m = d.depth_sd_m;
+  r.moving = (d.flags & topics::DEPTH_MOVING) != 0;
+  return r;
+}
+
+}  // namespace plumb::survey_component

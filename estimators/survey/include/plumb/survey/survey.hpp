@@ -1,0 +1,86 @@
+// A survey: stations in measured-depth order, each quality-checked, turned into the well path by
+// minimum curvature, with its position uncertainty. Rows never change once added (the path and the
+// uncertainty at a station depend only on the stations above it), so a live survey publishes and
+// appends each row once.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "plumb/survey/azimuth_reference.hpp"
+#include "plumb/survey/minimum_curvature.hpp"
+#include "plumb/survey/quality.hpp"
+#include "plumb/survey/uncertainty.hpp"
+
+namespace plumb::survey {
+
+// What was measured at one station (the inputs; everything else is derived from these).
+struct Station {
+  double t_s = 0;                      // time of the attitude (window end), s
+  std::string tool_id;
+  std::string source;                  // estimator name, or the file it came from
+  double md_m = 0, md_sd_m = 0;
+  double inclination_deg = 0, inclination_sd_deg = 0;
+  double magnetic_azimuth_deg = 0, azimuth_sd_deg = 0;
+  bool azimuth_valid = true;           // false near vertical (kept and flagged)
+  double total_g_mps2 = std::numeric_limits<double>::quiet_NaN();
+  double total_b_uT = std::numeric_limits<double>::quiet_NaN();
+  double dip_deg = std::numeric_limits<double>::quiet_NaN();
+};
+
+struct SurveyRow {
+  std::uint32_t index = 0;             // 0-based position in the survey
+  Station station;
+  double azimuth_deg = 0;              // in `reference`
+  AzimuthReference reference = AzimuthReference::Magnetic;
+  QcResult qc;
+  PathPoint point;
+  PositionUncertainty uncertainty;
+  std::string warning;                 // e.g. azimuth ill-conditioned; empty when none
+};
+
+struct SurveyOptions {
+  AzimuthReference reference = AzimuthReference::Magnetic;
+  NorthCorrections north;
+  ReferenceField field;
+  QcTolerances tolerances;
+  QcChecks checks;
+  ErrorModel errors;                   // declination_sd_deg is taken from `north` for true/grid surveys
+  double section_azimuth_deg = 0;      // in the survey's reference
+  Eigen::Vector3d tie_in = Eigen::Vector3d::Zero();  // position of the first station (north, east, tvd)
+};
+
+// A station that cannot enter the survey's geometry: depth not increasing, angles out of range,
+// numbers not finite. Its what() is one line naming the station.
+struct StationError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+// The measured depths (and angles) of two stations closer than this are the same station.
+inline constexpr double kDuplicateDepthM = 1e-6;
+
+class Survey {
+ public:
+  // Throws std::invalid_argument for options that cannot work (a true survey without declination,
+  // tolerances <= 0, non-finite numbers).
+  explicit Survey(SurveyOptions options);
+  // Checks the station and appends it with its QC, path point and uncertainty; a failed QC is kept
+  // and flagged. Throws StationError (and leaves the survey unchanged) for a station whose geometry
+  // is impossible: depth going backwards or repeated, inclination outside [0, 180], azimuth not finite.
+  const SurveyRow& add(const Station& station);
+  const std::vector<SurveyRow>& rows() const { return rows_; }
+  const SurveyOptions& options() const { return options_; }
+  std::size_t failed_qc() const { return failed_qc_; }
+
+ private:
+  SurveyOptions options_;
+  std::vector<SurveyRow> rows_;
+  std::vector<StationGeometry> geometry_;
+  std::vector<StationSigma> sigma_;
+  std::size_t failed_qc_ = 0;
+};
+
+}  // namespace plumb::survey

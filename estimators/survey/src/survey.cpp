@@ -1,0 +1,97 @@
+#include "plumb/survey/survey.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "plumb/core/attitude.hpp"
+
+namespace plumb::survey {
+namespace {
+
+std::string number(double v) {
+  std::ostringstream o;
+  o.precision(10);
+  o << v;
+  return o.str();
+}
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument(what);
+}
+
+}  // namespace
+
+Survey::Survey(SurveyOptions o) : options_(std::move(o)) {
+  // Fails now, not at the first station, when the reference needs a correction that is missing.
+  (void)convert_magnetic_azimuth(0, options_.reference, options_.north);
+  const auto& t = options_.tolerances;
+  require(t.gravity_mps2 > 0 && t.total_b_uT > 0 && t.dip_deg > 0, "QC tolerances must be > 0");
+  require(std::isfinite(options_.section_azimuth_deg), "the vertical-section azimuth must be finite");
+  require(options_.tie_in.allFinite(), "the tie-in position must be finite");
+  require(std::isfinite(options_.north.declination_sd_deg) && options_.north.declination_sd_deg >= 0,
+          "the declination sigma must be >= 0");
+  options_.errors.declination_sd_deg =
+      options_.reference == AzimuthReference::Magnetic ? 0.0 : options_.north.declination_sd_deg;
+  if (options_.field.total_b_uT) options_.errors.total_b_uT = *options_.field.total_b_uT;
+  if (options_.field.dip_deg) options_.errors.dip_deg = *options_.field.dip_deg;
+  if (options_.field.gravity_mps2) options_.errors.gravity_mps2 = *options_.field.gravity_mps2;
+}
+
+const SurveyRow& Survey::add(const Station& s) {
+  const std::string name = "station " + std::to_string(rows_.size()) + " (MD " + number(s.md_m) + " m)";
+  if (!std::isfinite(s.md_m)) throw StationError(name + ": measured depth is not a number");
+  if (!(std::isfinite(s.inclination_deg) && s.inclination_deg >= 0 && s.inclination_deg <= 180))
+    throw StationError(name + ": inclination " + number(s.inclination_deg) + " deg outside [0, 180]");
+  if (!std::isfinite(s.magnetic_azimuth_deg) || std::abs(s.magnetic_azimuth_deg) > 720)
+    throw StationError(name + ": azimuth " + number(s.magnetic_azimuth_deg) + " deg out of range");
+  for (double sd : {s.md_sd_m, s.inclination_sd_deg, s.azimuth_sd_deg})
+    if (!(std::isfinite(sd) && sd >= 0)) throw StationError(name + ": standard deviations must be finite and >= 0");
+  if (!rows_.empty()) {
+    const double previous = rows_.back().station.md_m;
+    if (std::abs(s.md_m - previous) <= kDuplicateDepthM)
+      throw StationError(name + ": duplicate of station " + std::to_string(rows_.size() - 1) + " (same measured depth)");
+    if (s.md_m < previous)
+      throw StationError(name + ": measured depth goes backwards (previous station at " + number(previous) + " m)");
+  }
+
+  SurveyRow row;
+  row.index = static_cast<std::uint32_t>(rows_.size());
+  row.station = s;
+  row.reference = options_.reference;
+  row.azimuth_deg = convert_magnetic_azimuth(s.magnetic_azimuth_deg, options_.reference, options_.north);
+  row.qc = check_station(s.total_g_mps2, s.total_b_uT, s.dip_deg, options_.field, options_.tolerances, options_.checks);
+  if (!s.azimuth_valid) row.warning = "azimuth ill-conditioned (near vertical)";
+
+  const StationGeometry here{s.md_m, s.inclination_deg, row.azimuth_deg};
+  if (rows_.empty()) {
+    row.point.north_m = options_.tie_in.x();
+    row.point.east_m = options_.tie_in.y();
+    row.point.tvd_m = options_.tie_in.z();
+  } else {
+    const StationGeometry& a = geometry_.back();
+    const PathPoint& prev = rows_.back().point;
+    const double course = here.md_m - a.md_m;
+    const double i1 = a.inclination_deg * kDeg, a1 = a.azimuth_deg * kDeg;
+    const double i2 = here.inclination_deg * kDeg, a2 = here.azimuth_deg * kDeg;
+    row.point.dogleg_deg = dogleg_rad(i1, a1, i2, a2) / kDeg;
+    // A reversal of direction has no arc (ratio factor infinite): no tool turns 180 deg between stations.
+    if (row.point.dogleg_deg > 179.999) throw StationError(name + ": direction reverses from the previous station");
+    const Eigen::Vector3d d = course_displacement(course, i1, a1, i2, a2);
+    row.point.north_m = prev.north_m + d.x();
+    row.point.east_m = prev.east_m + d.y();
+    row.point.tvd_m = prev.tvd_m + d.z();
+    row.point.dls_deg_per_30m = dls_deg_per_30m(row.point.dogleg_deg, course);
+    row.point.dls_deg_per_100ft = dls_deg_per_100ft(row.point.dogleg_deg, course);
+  }
+  geometry_.push_back(here);
+  sigma_.push_back({s.md_sd_m, s.inclination_sd_deg, s.azimuth_sd_deg, s.magnetic_azimuth_deg});
+  fill_section_and_closure(row.point, options_.section_azimuth_deg);
+  // The uncertainty at this station depends on the stations above it only; the whole propagation
+  // is O(stations) and a survey holds hundreds, not millions.
+  row.uncertainty = propagate_uncertainty(geometry_, sigma_, options_.errors).back();
+  if (!row.qc.pass) ++failed_qc_;
+  rows_.push_back(std::move(row));
+  return rows_.back();
+}
+
+}  // namespace plumb::survey

@@ -1,0 +1,249 @@
+#include "plumb/survey/survey_file.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "plumb/core/number.hpp"
+#include "plumb/csv/files.hpp"
+
+namespace plumb::survey {
+namespace {
+
+// The columns, in order; the inputs a restart reads back are marked in read_survey_file.
+const char* const kColumns[] = {
+    "station", "t", "tool_id", "source", "md_m", "md_sd_m", "inclination_deg", "inclination_sd_deg", "azimuth_deg",
+    "azimuth_sd_deg", "azimuth_reference", "magnetic_azimuth_deg", "azimuth_valid", "north_m", "east_m", "tvd_m",
+    "dogleg_deg", "dls_deg_per_30m", "dls_deg_per_100ft", "vertical_section_m", "closure_distance_m",
+    "closure_azimuth_deg", "north_sd_m", "east_sd_m", "tvd_sd_m", "ellipse_major_sd_m", "ellipse_minor_sd_m",
+    "ellipse_major_azimuth_deg", "cov_nn", "cov_ne", "cov_nd", "cov_ee", "cov_ed", "cov_dd", "total_g_mps2",
+    "total_b_uT", "dip_deg", "g_residual_mps2", "b_residual_uT", "dip_residual_deg", "qc", "qc_reason"};
+constexpr std::size_t kColumnCount = sizeof(kColumns) / sizeof(kColumns[0]);
+
+std::string header_line() {
+  std::string h;
+  for (std::size_t i = 0; i < kColumnCount; ++i) h += (i ? "," : "") + std::string(kColumns[i]);
+  return h;
+}
+
+// Free text in a CSV field: plumb's files never quote, so commas and line breaks become blanks.
+std::string field_text(std::string s) {
+  for (char& c : s)
+    if (c == ',' || c == '\n' || c == '\r') c = ' ';
+  return s;
+}
+
+// The shortest text that reads back as the same double: a survey read back from its file is the
+// same survey, digit for digit.
+std::string num(double v) {
+  if (!std::isfinite(v)) return "nan";
+  char buffer[32];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
+  return ec == std::errc() ? std::string(buffer, end) : "nan";
+}
+
+void throw_errno(const std::string& what, const std::string& path) {
+  throw std::runtime_error(what + " '" + path + "': " + std::strerror(errno));
+}
+
+void write_all(int fd, const std::string& text, const std::string& path) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      throw_errno("cannot write", path);
+    }
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+void sync_folder(const std::string& path) {
+  const auto folder = std::filesystem::absolute(path).parent_path();
+  const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY);
+  if (fd >= 0) {
+    ::fsync(fd);
+    ::close(fd);
+  }
+}
+
+}  // namespace
+
+void write_survey_header(std::ostream& out, const SurveyOptions& o) {
+  out << kSurveyFormatLine << '\n';
+  out << "# azimuth_reference " << to_string(o.reference);
+  if (o.north.declination_known) out << " declination_deg " << num(o.north.declination_deg);
+  if (o.north.convergence_known) out << " convergence_deg " << num(o.north.convergence_deg);
+  out << " section_azimuth_deg " << num(o.section_azimuth_deg) << '\n';
+  out << "# reference gravity_mps2 " << (o.field.gravity_mps2 ? num(*o.field.gravity_mps2) : "none") << " total_b_uT "
+      << (o.field.total_b_uT ? num(*o.field.total_b_uT) : "none") << " dip_deg "
+      << (o.field.dip_deg ? num(*o.field.dip_deg) : "none") << "; tolerances " << num(o.tolerances.gravity_mps2)
+      << " m/s^2, " << num(o.tolerances.total_b_uT) << " uT, " << num(o.tolerances.dip_deg) << " deg\n";
+  out << header_line() << '\n';
+}
+
+std::string survey_row_line(const SurveyRow& r) {
+  const Station& s = r.station;
+  const auto& p = r.point;
+  const auto& u = r.uncertainty;
+  const auto& c = u.covariance;
+  const auto& q = r.qc;
+  std::ostringstream o;
+  o << r.index << ',' << num(s.t_s) << ',' << field_text(s.tool_id) << ',' << field_text(s.source) << ','
+    << num(s.md_m) << ',' << num(s.md_sd_m) << ',' << num(s.inclination_deg) << ','
+    << num(s.inclination_sd_deg) << ',' << num(r.azimuth_deg) << ',' << num(s.azimuth_sd_deg) << ','
+    << to_string(r.reference) << ',' << num(s.magnetic_azimuth_deg) << ',' << (s.azimuth_valid ? 1 : 0) << ','
+    << num(p.north_m) << ',' << num(p.east_m) << ',' << num(p.tvd_m) << ',' << num(p.dogleg_deg) << ','
+    << num(p.dls_deg_per_30m) << ',' << num(p.dls_deg_per_100ft) << ',' << num(p.vertical_section_m) << ','
+    << num(p.closure_distance_m) << ',' << num(p.closure_azimuth_deg) << ',' << num(u.north_sd_m) << ','
+    << num(u.east_sd_m) << ',' << num(u.tvd_sd_m) << ',' << num(u.major_sd_m) << ',' << num(u.minor_sd_m) << ','
+    << num(u.major_azimuth_deg) << ',' << num(c(0, 0)) << ',' << num(c(0, 1)) << ',' << num(c(0, 2)) << ','
+    << num(c(1, 1)) << ',' << num(c(1, 2)) << ',' << num(c(2, 2)) << ',' << num(s.total_g_mps2) << ','
+    << num(s.total_b_uT) << ',' << num(s.dip_deg) << ',' << num(q.gravity_residual_mps2) << ','
+    << num(q.total_b_residual_uT) << ',' << num(q.dip_residual_deg) << ',' << (q.pass ? "pass" : "fail") << ','
+    << field_text(q.reason.empty() ? r.warning : (r.warning.empty() ? q.reason : q.reason + "; " + r.warning))
+    << '\n';
+  return o.str();
+}
+
+void write_survey_row(std::ostream& out, const SurveyRow& row) { out << survey_row_line(row); }
+
+std::string survey_text(const Survey& survey) {
+  std::ostringstream out;
+  write_survey_header(out, survey.options());
+  std::string text = out.str();
+  for (const auto& row : survey.rows()) text += survey_row_line(row);
+  return text;
+}
+
+void write_file_atomically(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp";
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw_errno("cannot write", tmp);
+  try {
+    write_all(fd, text, tmp);
+    if (::fsync(fd) != 0) throw_errno("cannot sync", tmp);
+  } catch (...) {
+    ::close(fd);
+    ::unlink(tmp.c_str());
+    throw;
+  }
+  ::close(fd);
+  if (::rename(tmp.c_str(), path.c_str()) != 0) {
+    ::unlink(tmp.c_str());
+    throw_errno("cannot rename to", path);
+  }
+  sync_folder(path);
+}
+
+LoadedSurvey read_survey_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open survey file '" + path + "'");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  LoadedSurvey out;
+  std::size_t pos = 0, line_no = 0;
+  bool format_seen = false;
+  std::map<std::string, std::size_t> col;
+  while (pos < text.size()) {
+    const auto end = text.find('\n', pos);
+    ++line_no;
+    const std::string where = path + ":" + std::to_string(line_no) + ": ";
+    if (end == std::string::npos) {
+      out.problem = where + "last line truncated (no end of line: the writer stopped in the middle of it)";
+      return out;
+    }
+    std::string line = text.substr(pos, end - pos);
+    pos = end + 1;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (!format_seen) {
+      if (line != kSurveyFormatLine)
+        throw std::runtime_error(where + "not a plumb survey file (first line must be '" + kSurveyFormatLine + "')");
+      format_seen = true;
+      out.valid_lines = line_no;
+      continue;
+    }
+    if (line.empty() || line[0] == '#') {
+      out.valid_lines = line_no;
+      continue;
+    }
+    const auto fields = csv::split_line(line);
+    if (col.empty()) {
+      if (line != header_line()) throw std::runtime_error(where + "unexpected column header (not a survey file of this version)");
+      for (std::size_t i = 0; i < fields.size(); ++i) col[fields[i]] = i;
+      out.valid_lines = line_no;
+      continue;
+    }
+    try {
+      if (fields.size() != kColumnCount)
+        throw std::runtime_error(std::to_string(fields.size()) + " fields, expected " + std::to_string(kColumnCount));
+      const auto number = [&](const char* name, bool allow_nan = false) {
+        const auto v = parse_number(fields[col.at(name)], allow_nan);
+        if (!v || (!allow_nan && !std::isfinite(*v)))
+          throw std::runtime_error("column '" + std::string(name) + "': bad number '" + fields[col.at(name)] + "'");
+        return *v;
+      };
+      const double index = number("station");
+      if (index != static_cast<double>(out.stations.size()))
+        throw std::runtime_error("station number " + fields[col.at("station")] + ", expected " +
+                                 std::to_string(out.stations.size()));
+      Station s;
+      s.t_s = number("t");
+      s.tool_id = fields[col.at("tool_id")];
+      s.source = fields[col.at("source")];
+      s.md_m = number("md_m");
+      s.md_sd_m = number("md_sd_m");
+      s.inclination_deg = number("inclination_deg");
+      s.inclination_sd_deg = number("inclination_sd_deg");
+      s.magnetic_azimuth_deg = number("magnetic_azimuth_deg");
+      s.azimuth_sd_deg = number("azimuth_sd_deg");
+      s.azimuth_valid = number("azimuth_valid") != 0;
+      s.total_g_mps2 = number("total_g_mps2", true);
+      s.total_b_uT = number("total_b_uT", true);
+      s.dip_deg = number("dip_deg", true);
+      const std::string qc = fields[col.at("qc")];
+      if (qc != "pass" && qc != "fail") throw std::runtime_error("column 'qc': '" + qc + "' is neither pass nor fail");
+      out.stations.push_back(s);
+      out.valid_lines = line_no;
+    } catch (const std::exception& e) {
+      out.problem = where + "damaged row (" + e.what() + ")";
+      return out;
+    }
+  }
+  if (!format_seen) throw std::runtime_error(path + ": empty, not a plumb survey file");
+  if (col.empty()) out.problem = path + ": no column header (the file was cut before it)";
+  return out;
+}
+
+SurveyAppender::SurveyAppender(const std::string& path, const SurveyOptions& options) : path_(path) {
+  std::error_code ec;
+  const bool fresh = !std::filesystem::exists(path, ec) || std::filesystem::file_size(path, ec) == 0;
+  if (fresh) {
+    std::ostringstream header;
+    write_survey_header(header, options);
+    write_file_atomically(path, header.str());
+  }
+  fd_ = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+  if (fd_ < 0) throw_errno("cannot append to survey file", path);
+}
+
+SurveyAppender::~SurveyAppender() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void SurveyAppender::append(const SurveyRow& row) {
+  // One write() of the whole row (O_APPEND), then fsync: after a crash the row is there whole, or
+  // it is a truncated last line that read_survey_file reports and drops.
+  write_all(fd_, survey_row_line(row), path_);
+  if (::fsync(fd_) != 0) throw_errno("cannot sync survey file", path_);
+}
+
+}  // namespace plumb::survey

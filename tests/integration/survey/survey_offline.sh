@@ -1,0 +1,100 @@
+#!/usr/bin/env bash
+# Issue 11 offline: `plumb survey` on the simulator's stop-and-go drilling run (sensor CSV with
+# measured depth, through the static estimator) and on a station list; the survey CSV and SVG
+# written whole; bad inputs refused with one line: depth backwards, a duplicate station, an angle
+# out of range, a missing reference, a true survey without declination.
+# usage: survey_offline.sh BIN_DIR
+set -euo pipefail
+bin=$1
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/../lib.sh"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+ref=(--gravity 9.80665 --total-field 50 --dip 60)
+
+"$bin/plumb-sim" --scenario drilling-survey --csv "$work/run" > /dev/null
+if "$bin/plumb" survey --input "$work/run/sensor.csv" "${ref[@]}" --reference true --declination 4 \
+     -o "$work/survey.csv" --plot "$work/survey.svg" 2> "$work/survey.err"; then
+  pass "plumb survey on a sensor CSV: $(tail -1 "$work/survey.err")"
+else
+  fail "plumb survey failed: $(cat "$work/survey.err")"
+fi
+python3 - "$work/survey.csv" "$work/run/truth.csv" <<'PY' && pass "seven stations at the stops, true azimuths, QC passed" || fail "survey CSV content"
+import csv, sys
+rows = list(csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith('#')))
+truth = list(csv.DictReader(open(sys.argv[2])))
+assert [int(r["station"]) for r in rows] == list(range(7)), len(rows)
+assert all(abs(float(r["md_m"]) - 1.5 * k) < 0.02 for k, r in enumerate(rows))
+assert all(r["azimuth_reference"] == "true" and r["qc"] == "pass" for r in rows)
+# true = magnetic + 4 deg; the simulated azimuth is magnetic.
+for r in rows:
+    assert abs((float(r["azimuth_deg"]) - float(r["magnetic_azimuth_deg"]) - 4 + 180) % 360 - 180) < 1e-9
+PY
+# The same run as an attitude CSV and a depth log: the same stations.
+"$bin/plumb" estimate --estimator static --input "$work/run/sensor.csv" --window 5 --output "$work/att.csv" 2> /dev/null
+python3 - "$work/run/sensor.csv" "$work/depth.csv" <<'PY'
+import csv, sys
+rows = csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith('#'))
+with open(sys.argv[2], "w") as out:
+    out.write("t,depth_m\n")
+    for k, r in enumerate(rows):
+        if k % 10 == 0: out.write(f"{r['t']},{r['depth_m']}\n")
+PY
+"$bin/plumb" survey --attitude "$work/att.csv" --depth "$work/depth.csv" --window 5 "${ref[@]}" -o "$work/survey2.csv" 2> /dev/null
+python3 - "$work/survey.csv" "$work/survey2.csv" <<'PY' && pass "attitude CSV + depth log: the same stations" || fail "attitude CSV + depth log differ"
+import csv, sys
+a, b = ([r for r in csv.DictReader(l for l in open(p) if not l.startswith('#'))] for p in sys.argv[1:])
+assert len(a) == len(b) == 7
+for x, y in zip(a, b):
+    assert abs(float(x["md_m"]) - float(y["md_m"])) < 1e-9
+    assert abs(float(x["inclination_deg"]) - float(y["inclination_deg"])) < 1e-6
+    assert abs(float(x["magnetic_azimuth_deg"]) - float(y["magnetic_azimuth_deg"])) < 1e-6
+PY
+# The strapdown navigator's rows (1 s, at the zero-velocity updates when the string stands) serve too.
+"$bin/plumb" survey --input "$work/run/sensor.csv" --estimator strapdown --param latitude_deg=35 --param gravity=9.80665 \
+  "${ref[@]}" -o "$work/strapdown.csv" 2> /dev/null
+python3 - "$work/survey.csv" "$work/strapdown.csv" "$work/run/truth.csv" <<'PY' && pass "strapdown navigator: the same stops, QC passed, inclination within 4 sigma of the truth" || fail "strapdown survey"
+import bisect, csv, sys
+a, b = ([r for r in csv.DictReader(l for l in open(p) if not l.startswith('#'))] for p in sys.argv[1:3])
+truth = list(csv.DictReader(open(sys.argv[3])))
+ts = [float(t["t"]) for t in truth]
+assert len(a) == len(b) == 7
+for x, y in zip(a, b):
+    assert abs(float(x["md_m"]) - float(y["md_m"])) < 1e-9 and y["qc"] == "pass"
+    t = truth[min(bisect.bisect_left(ts, float(y["t"])), len(truth) - 1)]
+    # The navigator estimates the accelerometer biases the static formula cannot: within 4 of its sigmas.
+    err = abs(float(y["inclination_deg"]) - float(t["inclination_deg"]))
+    assert err < 4 * float(y["inclination_sd_deg"]), (y["t"], err, y["inclination_sd_deg"])
+PY
+# No depth at all: a pipe tally numbers the stops (valid, non-rotating windows); corrections per stop.
+printf 'joint_m,correction_m\n1.5,0\n1.5,0.01\n1.5,0\n1.5,0\n1.5,-0.02\n1.5,0\n1.5,0\n' > "$work/tally.csv"
+"$bin/plumb" survey --attitude "$work/att.csv" --tally "$work/tally.csv" --start-md 100 "${ref[@]}" -o "$work/tally_survey.csv" 2> /dev/null
+python3 - "$work/tally_survey.csv" <<'PY' && pass "pipe tally: stops at start + joints + corrections" || fail "pipe tally survey"
+import csv, sys
+rows = [r for r in csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith('#'))]
+want = [100, 101.51, 103, 104.5, 105.98, 107.5, 109]
+got = [float(r["md_m"]) for r in rows]
+assert len(got) == 7 and all(abs(g - w) < 1e-9 for g, w in zip(got, want)), got
+PY
+if grep -q "<svg" "$work/survey.svg" && grep -q "</svg>" "$work/survey.svg"; then pass "SVG plot written"; else fail "no SVG"; fi
+if [ ! -e "$work/survey.csv.tmp" ]; then pass "no temporary file left"; else fail "survey.csv.tmp left behind"; fi
+
+printf 'md_m,inclination_deg,azimuth_deg\n100,10,20\n110,12,22\n105,13,23\n' > "$work/backwards.csv"
+printf 'md_m,inclination_deg,azimuth_deg\n100,10,20\n110,12,22\n110,12,22\n' > "$work/duplicate.csv"
+printf 'md_m,inclination_deg,azimuth_deg\n100,10,20\n110,190,22\n' > "$work/range.csv"
+printf 'md_m,inclination_deg,azimuth_deg\n100,10,20\n110,12,22\n' > "$work/good.csv"
+skip=(--skip-check gravity --skip-check field --skip-check dip)
+expect_error "depth going backwards" "backwards.csv: station 2 .*goes backwards" "$bin/plumb" survey --stations "$work/backwards.csv" "${skip[@]}" -o "$work/x.csv"
+expect_error "duplicate station" "duplicate of station 1" "$bin/plumb" survey --stations "$work/duplicate.csv" "${skip[@]}" -o "$work/x.csv"
+expect_error "inclination out of range" "range.csv:3: inclination 190 deg outside" "$bin/plumb" survey --stations "$work/range.csv" "${skip[@]}" -o "$work/x.csv"
+expect_error "missing reference field" "missing reference total field" "$bin/plumb" survey --stations "$work/good.csv" --gravity 9.8 --dip 60 -o "$work/x.csv"
+expect_error "true survey without declination" "needs --declination" "$bin/plumb" survey --stations "$work/good.csv" "${skip[@]}" --reference true -o "$work/x.csv"
+if [ ! -e "$work/x.csv" ]; then pass "nothing written by a failed survey"; else fail "a failed survey wrote x.csv"; fi
+# A station without its measured field fails QC and is kept, flagged.
+"$bin/plumb" survey --stations "$work/good.csv" "${ref[@]}" -o "$work/flagged.csv" 2> /dev/null
+if output_matches "no |B| measured" cat "$work/flagged.csv" && [ "$(grep -c ',fail,' "$work/flagged.csv")" -eq 2 ]; then
+  pass "stations without a measured field kept and flagged"
+else
+  fail "flagged stations: $(cat "$work/flagged.csv")"
+fi
+finish

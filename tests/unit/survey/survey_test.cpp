@@ -1,0 +1,221 @@
+// The survey (bad stations, flagged QC), the survey file (round trip, truncation, damage, atomic
+// rewrite) and the station detector (one station per stop, repeats, restarts, pipe tally).
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "plumb/survey/station_detector.hpp"
+#include "plumb/survey/survey.hpp"
+#include "plumb/survey/survey_file.hpp"
+
+namespace plumb::survey {
+namespace {
+
+SurveyOptions options() {
+  SurveyOptions o;
+  o.field.gravity_mps2 = 9.80665;
+  o.field.total_b_uT = 50;
+  o.field.dip_deg = 60;
+  return o;
+}
+
+Station station(double md, double inc, double az, double b = 50) {
+  Station s;
+  s.md_m = md;
+  s.inclination_deg = inc;
+  s.magnetic_azimuth_deg = az;
+  s.inclination_sd_deg = 0.05;
+  s.azimuth_sd_deg = 0.3;
+  s.total_g_mps2 = 9.80665;
+  s.total_b_uT = b;
+  s.dip_deg = 60;
+  s.source = "static";
+  s.tool_id = "t1";
+  return s;
+}
+
+TEST(Survey, BadStationsAreRefusedWithTheirReasonAndLeaveTheSurveyAsItWas) {
+  Survey s(options());
+  s.add(station(100, 10, 20));
+  s.add(station(110, 11, 21));
+  const auto refused = [&](const Station& st, const char* what) {
+    try {
+      s.add(st);
+      ADD_FAILURE() << "accepted: " << what;
+    } catch (const StationError& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  refused(station(105, 11, 21), "goes backwards");
+  refused(station(110, 11, 21), "duplicate");
+  refused(station(120, 181, 21), "outside [0, 180]");
+  refused(station(120, -1, 21), "outside [0, 180]");
+  refused(station(120, 10, std::nan("")), "azimuth");
+  EXPECT_EQ(s.rows().size(), 2u);
+}
+
+TEST(Survey, FailedQcIsKeptAndFlagged) {
+  Survey s(options());
+  s.add(station(100, 10, 20));
+  const auto& row = s.add(station(110, 11, 21, 51));
+  EXPECT_FALSE(row.qc.pass);
+  EXPECT_NE(row.qc.reason.find("|B|"), std::string::npos);
+  EXPECT_EQ(s.rows().size(), 2u);
+  EXPECT_EQ(s.failed_qc(), 1u);
+}
+
+TEST(Survey, TrueSurveyNeedsDeclinationAndSaysSo) {
+  auto o = options();
+  o.reference = AzimuthReference::True;
+  EXPECT_THROW(Survey{o}, std::invalid_argument);
+  o.north.declination_known = true;
+  o.north.declination_deg = 10;
+  Survey s(o);
+  EXPECT_NEAR(s.add(station(0, 30, 355)).azimuth_deg, 5, 1e-12);
+  EXPECT_EQ(s.rows()[0].reference, AzimuthReference::True);
+}
+
+std::string temp_path(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("plumb_survey_test_" + std::to_string(::getpid()) + name)).string();
+}
+
+TEST(SurveyFile, AppendedRowsReadBackIntoTheSameSurvey) {
+  const std::string path = temp_path("append.csv");
+  std::filesystem::remove(path);
+  Survey a(options());
+  {
+    SurveyAppender out(path, a.options());
+    for (int k = 0; k < 5; ++k) out.append(a.add(station(100 + 10 * k, 10 + k, 20 + 2 * k)));
+  }
+  const auto loaded = read_survey_file(path);
+  EXPECT_TRUE(loaded.problem.empty()) << loaded.problem;
+  ASSERT_EQ(loaded.stations.size(), 5u);
+  Survey b(options());
+  for (const auto& st : loaded.stations) b.add(st);
+  EXPECT_EQ(survey_text(a), survey_text(b));
+  std::filesystem::remove(path);
+}
+
+TEST(SurveyFile, TruncatedOrDamagedRowsKeepTheValidPartAndSayWhere) {
+  const std::string path = temp_path("damaged.csv");
+  Survey a(options());
+  for (int k = 0; k < 4; ++k) a.add(station(100 + 10 * k, 10 + k, 20));
+  const std::string text = survey_text(a);
+  // Cut in the middle of the last row: the writer died while writing it.
+  write_file_atomically(path, text.substr(0, text.size() - 20));
+  auto loaded = read_survey_file(path);
+  EXPECT_EQ(loaded.stations.size(), 3u);
+  EXPECT_NE(loaded.problem.find("truncated"), std::string::npos) << loaded.problem;
+  // A damaged row in the middle: what is above it is kept.
+  std::string damaged = text;
+  const auto third_row = damaged.find("\n2,");
+  damaged.replace(third_row + 3, 5, "xx,yy");
+  write_file_atomically(path, damaged);
+  loaded = read_survey_file(path);
+  EXPECT_EQ(loaded.stations.size(), 2u);
+  EXPECT_NE(loaded.problem.find("damaged row"), std::string::npos) << loaded.problem;
+  // Not a survey file at all: an error, not an empty survey.
+  write_file_atomically(path, "t,inclination_deg\n1,2\n");
+  EXPECT_THROW(read_survey_file(path), std::runtime_error);
+  std::filesystem::remove(path);
+  EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
+}
+
+// A stop-and-go run: depth reports every 0.5 s; attitude windows of 2 s every 2 s, valid only
+// while the depth stands (a static estimator); stops at 0, 9.5, 19 m, then a resurvey at 19 m.
+struct StopAndGo {
+  std::vector<Station> stations;
+  std::vector<std::string> notes;
+  StationDetector detector{DetectorOptions{}, [this](const Station& s) { stations.push_back(s); },
+                           [this](const std::string& n) { notes.push_back(n); }};
+};
+
+double depth_at(double t) {
+  // stand 0-20 s at 0; drill to 9.5 by 40 s; stand to 60; drill to 19 by 80; stand to 100;
+  // pull up to 17 by 110; run back to 19 by 120; stand to 140.
+  const auto ramp = [](double t0, double t1, double d0, double d1, double t) { return d0 + (d1 - d0) * (t - t0) / (t1 - t0); };
+  if (t < 20) return 0;
+  if (t < 40) return ramp(20, 40, 0, 9.5, t);
+  if (t < 60) return 9.5;
+  if (t < 80) return ramp(60, 80, 9.5, 19, t);
+  if (t < 100) return 19;
+  if (t < 110) return ramp(100, 110, 19, 17, t);
+  if (t < 120) return ramp(110, 120, 17, 19, t);
+  return 19;
+}
+
+Estimate window(double t0, double t1, bool still) {
+  Estimate e;
+  e.estimator = "static";
+  e.t_start = t0;
+  e.t_end = t1;
+  e.valid = still;
+  e.azimuth_valid = still;
+  e.inclination_deg = 30 + t0 / 100;
+  e.azimuth_deg = 120;
+  e.total_g = 9.80665;
+  e.total_b = 50;
+  e.dip_deg = 60;
+  return e;
+}
+
+void feed(StopAndGo& run, double from, double to) {
+  for (double t = from; t < to; t += 2) {
+    for (double td = t; td < t + 2; td += 0.5) run.detector.add_depth({td, depth_at(td), 0.01, false});
+    // Static estimates are valid when the tool stands; here also while it moves slowly (sliding),
+    // so that only the depth tells a stop from drilling.
+    run.detector.add_attitude(window(t, t + 2, true), "t1");
+  }
+}
+
+TEST(StationDetector, OneStationPerStopAndARepeatIsSaid) {
+  StopAndGo run;
+  feed(run, 0, 140);
+  run.detector.flush();
+  ASSERT_EQ(run.stations.size(), 3u);
+  EXPECT_EQ(run.stations[0].md_m, 0);
+  EXPECT_EQ(run.stations[1].md_m, 9.5);
+  EXPECT_EQ(run.stations[2].md_m, 19);
+  EXPECT_GE(run.stations[1].t_s - 2, 40);  // the whole window inside the stop
+  EXPECT_EQ(run.detector.counters().repeat_stops, 1u);
+  ASSERT_EQ(run.notes.size(), 1u);
+  EXPECT_GT(run.detector.counters().moving_windows, 20u);
+}
+
+TEST(StationDetector, ResumedDetectorNeitherRepeatsNorLosesStations) {
+  StopAndGo first;
+  feed(first, 0, 50);  // killed during the second stop, after its station
+  ASSERT_EQ(first.stations.size(), 2u);
+  StopAndGo second;
+  second.detector.resume(first.stations.back().t_s, first.stations.back().md_m, 2);
+  feed(second, 44, 100);  // restarted: the windows of the same stop come again, then the next stop
+  second.detector.flush();
+  ASSERT_EQ(second.stations.size(), 1u);
+  EXPECT_EQ(second.stations[0].md_m, 19);
+  EXPECT_GT(second.detector.counters().old_windows + second.detector.counters().same_stop_windows, 0u);
+}
+
+TEST(StationDetector, PipeTallyNumbersTheStops) {
+  DetectorOptions o;
+  o.tally = PipeTally{100, {9.6, 9.4}, {0, 0.02}, 0.05};
+  std::vector<Station> got;
+  StationDetector d(o, [&](const Station& s) { got.push_back(s); });
+  const bool pattern[] = {true, true, false, false, true, false, true, true, true};
+  double t = 0;
+  for (bool still : pattern) {
+    d.add_attitude(window(t, t + 2, still), "t1");
+    t += 2;
+  }
+  ASSERT_EQ(got.size(), 3u);
+  EXPECT_NEAR(got[0].md_m, 100, 1e-12);
+  EXPECT_NEAR(got[1].md_m, 109.62, 1e-12);
+  EXPECT_NEAR(got[2].md_m, 119.0, 1e-12);
+  EXPECT_EQ(got[2].md_sd_m, 0.05);
+}
+
+}  // namespace
+}  // namespace plumb::survey
