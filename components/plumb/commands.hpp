@@ -9,6 +9,8 @@ void add_topic_commands(CLI::App& app);      // topic list | echo | hz | pub
 void add_listing_commands(CLI::App& app);    // transports, plugins
 void add_estimate_command(CLI::App& app);    // estimate (offline, CSV in, CSV out)
 void add_compare_command(CLI::App& app);     // compare (scenario grid, CRB, plots)
+void add_status_command(CLI::App& app);      // status (components seen on the network)
+void add_config_command(CLI::App& app);      // config check (DDS XML files for other applications)
 
 // Set by a subcommand's callback: the process exit code.
 extern int g_exit_code;

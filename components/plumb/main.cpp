@@ -16,6 +16,8 @@ int main(int argc, char** argv) {
   plumb::cli::add_listing_commands(app);
   plumb::cli::add_estimate_command(app);
   plumb::cli::add_compare_command(app);
+  plumb::cli::add_status_command(app);
+  plumb::cli::add_config_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
