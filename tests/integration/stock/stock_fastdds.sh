@@ -12,9 +12,10 @@ export PLUMB_DOMAIN_ID=$3
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../lib.sh"
 . "$here/../wait.sh"
+. "$here/../multihost/netns.sh"
 work=$(mktemp -d)
 pids=()
-cleanup() { exec 3>&- 2>/dev/null; for p in "${pids[@]}"; do kill "$p" 2>/dev/null; done; rm -rf "$work"; }
+cleanup() { exec 3>&- 2>/dev/null; for p in "${pids[@]}"; do kill "$p" 2>/dev/null; done; netns_cleanup; rm -rf "$work"; }
 trap cleanup EXIT
 export FASTRTPS_DEFAULT_PROFILES_FILE=$src/transports/config/fastdds-loopback.xml
 
@@ -65,4 +66,39 @@ for t in cyclonedds fastdds; do
     --inc-tol 0.01 --azi-tol 0.1 && pass "its estimate is the stock publisher's attitude ($t)" ||
     fail "echo ($t): $(cat "$work/echo.$t" "$work/att.$t")"
 done
+
+# Two computers: network namespaces joined by a veth pair; the stock programs use the shipped
+# interface profile with the address edited (fastdds-interface.xml), plumb uses --interface, and the
+# two sides use different plumb transports.
+if ! netns_pair 10.233.0; then echo "network namespaces unavailable: two-computer part skipped"; finish; fi
+for side in tool surface; do
+  address=10.233.0.1; [ $side = surface ] && address=10.233.0.2
+  sed "s|192.168.10.2|$address|" "$src/transports/config/fastdds-interface.xml" > "$work/$side.xml"
+done
+in_tool() { ip netns exec "$tool" env FASTRTPS_DEFAULT_PROFILES_FILE="$work/tool.xml" "$@"; }
+in_surface() { ip netns exec "$surface" env FASTRTPS_DEFAULT_PROFILES_FILE="$work/surface.xml" "$@"; }
+
+mkfifo "$work/in.hosts"
+in_surface "$work/attitude/build/attitude" subscriber < "$work/in.hosts" > "$work/sub.hosts" 2>&1 &
+exec 3> "$work/in.hosts"
+in_tool "$bin/plumb" topic pub plumb/attitude/test inclination_deg=1.5 --count 3 --rate 5 --wait 20 --transport cyclonedds \
+  --interface "$tool_if" > "$work/pub.hosts" 2>&1 || fail "plumb topic pub (tool side): $(cat "$work/pub.hosts")"
+wait_for "$work/sub.hosts" "Sample received, count=3 inclination_deg=1.5" 20 &&
+  pass "stock Fast DDS subscriber (surface) got plumb's attitude from the tool side (cyclonedds)" ||
+  fail "stock subscriber across: $(cat "$work/pub.hosts" "$work/sub.hosts")"
+exec 3>&-
+
+in_surface "$bin/plumb" topic echo plumb/attitude/static --csv --count 1 --timeout 60 --transport fastdds \
+  --interface "$surface_if" > "$work/att.hosts" 2> "$work/echo.hosts" &
+echo_pid=$!
+in_surface "$bin/plumb-estimator" --plugin static --window 2 --input plumb/sensor/raw --reliable --count 2 --timeout 60 -q \
+  --transport fastdds --interface "$surface_if" > "$work/host.hosts" 2>&1 &
+host=$!
+{ for i in $(seq 1 80); do echo y; sleep 0.1; done; echo n; } | in_tool "$work/sensor/build/sensor" publisher > "$work/spub.hosts" 2>&1 ||
+  fail "stock publisher (tool side): $(tail -c 300 "$work/spub.hosts")"
+wait $host && pass "plumb-estimator (surface, fastdds) accepted the stock publisher's batches from the tool side" ||
+  fail "host across: $(cat "$work/host.hosts")"
+wait $echo_pid && python3 "$here/../e2e/check_estimates.py" "$work/att.hosts" --inclination 2 --azimuth 30 \
+  --inc-tol 0.01 --azi-tol 0.1 && pass "its estimate is the stock publisher's attitude (across)" ||
+  fail "echo across: $(cat "$work/echo.hosts" "$work/att.hosts")"
 finish
