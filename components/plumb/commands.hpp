@@ -14,6 +14,8 @@ void add_play_command(CLI::App& app);        // play (an MCAP recording back ont
 void add_info_command(CLI::App& app);        // info (what a recording holds)
 void add_export_command(CLI::App& app);      // export (a recorded topic as CSV)
 void add_survey_command(CLI::App& app);      // survey (offline: stations, QC, minimum curvature, uncertainty)
+void add_status_command(CLI::App& app);      // status (components seen on the network)
+void add_config_command(CLI::App& app);      // config check (DDS XML files for other applications)
 
 // Set by a subcommand's callback: the process exit code.
 extern int g_exit_code;

@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
   plumb::cli::add_info_command(app);
   plumb::cli::add_export_command(app);
   plumb::cli::add_survey_command(app);
+  plumb::cli::add_status_command(app);
+  plumb::cli::add_config_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

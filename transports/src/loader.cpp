@@ -3,6 +3,8 @@
 
 #include <cstdlib>
 
+#include "vendor_library.hpp"
+
 namespace plumb::transport {
 
 const plugin::Kind kTransportPlugins{"transport", "libplumb_transport_", "PLUMB_TRANSPORT_PATH",
@@ -27,6 +29,10 @@ std::shared_ptr<Transport> load_transport(const std::string& requested) {
     return std::shared_ptr<Transport>(transport);
   } catch (const plugin::Error& e) {
     if (e.file.empty()) throw Error(e.what());  // unknown name: the message lists what exists
+    if (const auto missing = missing_vendor_library(e.reason)) {
+      throw Error("transport '" + name + "' needs " + missing->library + ", which is missing or unreadable: install the " +
+                  "Debian package " + missing->package + " (apt-get install " + missing->package + ")");
+    }
     throw Error("transport '" + name + "' in " + e.what() + " (" + plugin::describe(kTransportPlugins, find_transports()) + ")");
   }
 }

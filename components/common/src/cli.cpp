@@ -58,6 +58,7 @@ Connection connect(const TransportOptions& options, const std::string& participa
   Connection c;
   c.transport = transport::load_transport(options.transport);
   c.participant = c.transport->create_participant(p);
+  c.options = p;
   return c;
 }
 

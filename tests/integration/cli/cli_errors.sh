@@ -13,7 +13,7 @@ for exe in plumb plumb-sim plumb-estimator plumb-bridge plumb-calibrate plumb-su
     fail "$exe is not built"
   fi
 done
-for sub in "topic list" "topic echo" "topic hz" "topic pub" transports plugins estimate record play info export survey; do
+for sub in "topic list" "topic echo" "topic hz" "topic pub" transports plugins estimate record play info export survey status; do
   "$bin/plumb" $sub --help > /dev/null 2>&1 && pass "plumb $sub --help" || fail "plumb $sub --help"
 done
 

@@ -8,41 +8,20 @@ set -uo pipefail
 bin=$1 tool_t=$2 surface_t=$3
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../lib.sh"
-if ! ip netns add plumb-probe-$$ 2>/dev/null; then
-  echo "cannot create network namespaces here (needs root and iproute2): skipped"
-  exit 77
-fi
-ip netns del plumb-probe-$$
-tool=plumb-tool-$$ surface=plumb-surface-$$
+. "$here/netns.sh"
 work=$(mktemp -d)
-cleanup() {
-  kill $(jobs -p) 2>/dev/null
-  ip netns pids "$tool" 2>/dev/null | xargs -r kill 2>/dev/null
-  ip netns pids "$surface" 2>/dev/null | xargs -r kill 2>/dev/null
-  ip netns del "$tool" 2>/dev/null
-  ip netns del "$surface" 2>/dev/null
-  rm -rf "$work"
-}
+cleanup() { kill $(jobs -p) 2>/dev/null; netns_cleanup; rm -rf "$work"; }
 trap cleanup EXIT
-ip netns add "$tool" && ip netns add "$surface" || { fail "netns add"; finish; }
-ip link add veth-t$$ netns "$tool" type veth peer name veth-s$$ netns "$surface"
-ip -n "$tool" addr add 10.231.0.1/24 dev veth-t$$
-ip -n "$surface" addr add 10.231.0.2/24 dev veth-s$$
-for ns in "$tool" "$surface"; do ip -n "$ns" link set lo up; done
-ip -n "$tool" link set veth-t$$ up multicast on
-ip -n "$surface" link set veth-s$$ up multicast on
-# DDS discovery multicasts to 239.255.0.1: route multicast over the veth.
-ip -n "$tool" route add 224.0.0.0/4 dev veth-t$$
-ip -n "$surface" route add 224.0.0.0/4 dev veth-s$$
+netns_pair 10.231.0 || { rc=$?; [ $rc -eq 77 ] && exit 77; fail "netns setup"; finish; }
 
 ip netns exec "$surface" timeout 90 "$bin/plumb" topic echo plumb/attitude/compensated --csv --count 1 --timeout 80 \
-  --transport "$surface_t" --interface veth-s$$ > "$work/att.csv" 2> "$work/echo.err" &
+  --transport "$surface_t" --interface $surface_if > "$work/att.csv" 2> "$work/echo.err" &
 echo_pid=$!
 ip netns exec "$surface" timeout 90 "$bin/plumb-estimator" --plugin compensated --input plumb/sensor/raw --reliable \
   --window 5 --count 1 --timeout 80 -q --transport "$surface_t" --interface 10.231.0.2 > "$work/host.log" 2>&1 &
 host_pid=$!
 sleep 2
-ip netns exec "$tool" timeout 90 "$bin/plumb-sim" --transport "$tool_t" --interface veth-t$$ --inclination 1 --azimuth 45 \
+ip netns exec "$tool" timeout 90 "$bin/plumb-sim" --transport "$tool_t" --interface $tool_if --inclination 1 --azimuth 45 \
   --rpm 60 --duration 5.5 --snr-accel 40 --snr-mag 40 --rate x4 --reliable --wait-subscribers 30 > "$work/sim.log" 2>&1 ||
   fail "plumb-sim in the tool namespace: $(cat "$work/sim.log")"
 wait $host_pid && pass "estimator host in the surface namespace got the stream" || fail "host: $(cat "$work/host.log")"

@@ -31,6 +31,7 @@ void add_param_option(CLI::App& app, std::vector<std::string>& params);
 struct Connection {
   std::shared_ptr<transport::Transport> transport;
   std::unique_ptr<transport::Participant> participant;
+  transport::ParticipantOptions options;  // as resolved from flags and environment (for messages)
 };
 // Throws transport::Error with a one-line message on failure.
 Connection connect(const TransportOptions& options, const std::string& participant_name);

@@ -1,0 +1,33 @@
+# Two "computers" on one machine: network namespaces joined by a veth pair, with addresses that
+# exist only inside them. Source it, then:
+#   netns_pair SUBNET   creates namespaces $tool and $surface, interfaces $tool_if (SUBNET.1) and
+#                       $surface_if (SUBNET.2), multicast routed over the pair (DDS discovery);
+#                       returns 77 where namespaces cannot be created (not root, no iproute2)
+#   netns_cleanup       stops what runs in them and deletes them (call it from the EXIT trap)
+netns_pair() {
+  local subnet=$1
+  if ! ip netns add plumb-probe-$$ 2>/dev/null; then
+    echo "cannot create network namespaces here (needs root and iproute2): skipped"
+    return 77
+  fi
+  ip netns del plumb-probe-$$
+  tool=plumb-tool-$$ surface=plumb-surface-$$ tool_if=veth-t$$ surface_if=veth-s$$
+  ip netns add "$tool" && ip netns add "$surface" || return 1
+  ip link add "$tool_if" netns "$tool" type veth peer name "$surface_if" netns "$surface" || return 1
+  ip -n "$tool" addr add "$subnet.1/24" dev "$tool_if"
+  ip -n "$surface" addr add "$subnet.2/24" dev "$surface_if"
+  for ns in "$tool" "$surface"; do ip -n "$ns" link set lo up; done
+  ip -n "$tool" link set "$tool_if" up multicast on
+  ip -n "$surface" link set "$surface_if" up multicast on
+  # DDS discovery multicasts to 239.255.0.1: route multicast over the veth.
+  ip -n "$tool" route add 224.0.0.0/4 dev "$tool_if"
+  ip -n "$surface" route add 224.0.0.0/4 dev "$surface_if"
+}
+netns_cleanup() {
+  local ns
+  for ns in "${tool:-}" "${surface:-}"; do
+    [ -n "$ns" ] || continue
+    ip netns pids "$ns" 2>/dev/null | xargs -r kill 2>/dev/null
+    ip netns del "$ns" 2>/dev/null
+  done
+}
