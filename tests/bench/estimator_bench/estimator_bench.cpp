@@ -59,15 +59,15 @@ void plugin(benchmark::State& state, const std::string& name) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * data.size()));
 }
 
-// One hour at 400 Hz: a 60 s alignment, then 15 cycles of 8 m drilled at 0.05 m/s (sliding and
-// rotary in turn) and a 60 s pipe connection, the shape of the reference run made four times longer.
+// One hour at 400 Hz (61 min): a 60 s alignment, then 16 cycles of 8 m drilled at 0.05 m/s (sliding
+// and rotary in turn) and a 60 s pipe connection, the shape of the reference run made four times longer.
 constexpr double kStrapdownRateHz = 400;
 
 const std::vector<plumb::Sample>& drilling_hour() {
   static const std::vector<plumb::Sample> data = [] {
     auto s = plumb::sim::DrillingScenario::reference(plumb::sim::ImuGrade::named("tactical"), kStrapdownRateHz, 1);
     s.plan.segments.clear();
-    for (int i = 0; i < 15; ++i) {
+    for (int i = 0; i < 16; ++i) {
       s.plan.segments.push_back(i % 2 ? plumb::sim::DrillSegment::rotary(8, 0.05, 30, 1.0)
                                        : plumb::sim::DrillSegment::drill(8, 0.05, 1.0, 0.5));
       s.plan.segments.push_back(plumb::sim::DrillSegment::stop(60));
