@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "plumb/components/convert.hpp"
 #include "plumb/components/status_reporter.hpp"
 #include "plumb/transport/topic_names.hpp"
 #include "station_message.hpp"
@@ -138,7 +139,7 @@ int run_live_survey(const LiveOptions& o) {
         ++other_tool;
         continue;
       }
-      detector.add_attitude(from_topic(a), a.tool_id);
+      detector.add_attitude(components::from_topic(a), a.tool_id);
     }
     if (status.due()) status.publish(refused ? "degraded" : "running", counters(), last_error);
   }

@@ -50,32 +50,6 @@ topics::SurveyStation to_topic(const survey::SurveyRow& r) {
   return m;
 }
 
-Estimate from_topic(const topics::Attitude& a) {
-  Estimate e;
-  e.estimator = a.estimator;
-  e.t_start = components::ns_to_seconds(a.window_start_ns);
-  e.t_end = components::ns_to_seconds(a.window_end_ns);
-  e.inclination_deg = a.inclination_deg;
-  e.azimuth_deg = a.azimuth_deg;
-  e.gravity_toolface_deg = a.gravity_toolface_deg;
-  e.magnetic_toolface_deg = a.magnetic_toolface_deg;
-  e.rpm = a.rpm;
-  e.inclination_sd_deg = a.inclination_sd_deg;
-  e.azimuth_sd_deg = a.azimuth_sd_deg;
-  e.toolface_sd_deg = a.toolface_sd_deg;
-  e.dip_deg = a.dip_deg;
-  e.total_g = a.total_g;
-  e.total_b = a.total_b;
-  e.samples_used = a.samples_used;
-  e.valid = (a.flags & topics::ATTITUDE_VALID) != 0;
-  e.azimuth_valid = (a.flags & topics::ATTITUDE_AZIMUTH_VALID) != 0;
-  e.toolface_valid = (a.flags & topics::ATTITUDE_TOOLFACE_VALID) != 0;
-  e.rotating = (a.flags & topics::ATTITUDE_ROTATING) != 0;
-  e.partial_window = (a.flags & topics::ATTITUDE_PARTIAL_WINDOW) != 0;
-  e.reason = a.reason;
-  return e;
-}
-
 survey::DepthReport from_topic(const topics::MeasuredDepth& d) {
   survey::DepthReport r;
   r.t_s = components::ns_to_seconds(d.stamp_ns);

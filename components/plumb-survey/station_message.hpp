@@ -9,7 +9,6 @@
 namespace plumb::survey_component {
 
 topics::SurveyStation to_topic(const survey::SurveyRow& row);
-Estimate from_topic(const topics::Attitude& a);
 survey::DepthReport from_topic(const topics::MeasuredDepth& d);
 
 }  // namespace plumb::survey_component

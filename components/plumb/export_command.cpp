@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "csv_output.hpp"
+#include "plumb/components/convert.hpp"
 #include "plumb/mcap/reader.hpp"
 #include "plumb/topics/cdr.hpp"
 #include "plumb/topics/names.hpp"
@@ -21,32 +22,6 @@ struct ExportOptions {
   std::string output;
 };
 
-Estimate from_topic(const topics::Attitude& a) {
-  Estimate e;
-  e.estimator = a.estimator;
-  e.t_start = components::ns_to_seconds(a.window_start_ns);
-  e.t_end = components::ns_to_seconds(a.window_end_ns);
-  e.inclination_deg = a.inclination_deg;
-  e.azimuth_deg = a.azimuth_deg;
-  e.gravity_toolface_deg = a.gravity_toolface_deg;
-  e.magnetic_toolface_deg = a.magnetic_toolface_deg;
-  e.rpm = a.rpm;
-  e.inclination_sd_deg = a.inclination_sd_deg;
-  e.azimuth_sd_deg = a.azimuth_sd_deg;
-  e.toolface_sd_deg = a.toolface_sd_deg;
-  e.dip_deg = a.dip_deg;
-  e.total_g = a.total_g;
-  e.total_b = a.total_b;
-  e.samples_used = a.samples_used;
-  e.valid = a.flags & topics::ATTITUDE_VALID;
-  e.azimuth_valid = a.flags & topics::ATTITUDE_AZIMUTH_VALID;
-  e.toolface_valid = a.flags & topics::ATTITUDE_TOOLFACE_VALID;
-  e.rotating = a.flags & topics::ATTITUDE_ROTATING;
-  e.partial_window = a.flags & topics::ATTITUDE_PARTIAL_WINDOW;
-  e.reason = a.reason;
-  return e;
-}
-
 // Writes the messages of one topic, decoded, in the CSV its type has.
 template <class M> class TopicCsv {
  public:
@@ -56,7 +31,7 @@ template <class M> class TopicCsv {
     } else if constexpr (std::is_same_v<M, topics::Attitude>) {
       if (!header_) csv::write_attitude_header(out);
       header_ = true;
-      csv::write_attitude_row(out, from_topic(m));
+      csv::write_attitude_row(out, components::from_topic(m));
     } else if constexpr (std::is_same_v<M, topics::Truth>) {
       if (!header_) out << "t,inclination_deg,azimuth_deg,toolface_deg,rpm\n";
       header_ = true;

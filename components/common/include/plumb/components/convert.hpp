@@ -14,6 +14,8 @@ Sample from_topic(const topics::SensorSample& s);
 
 // t_end / t_start (s) become window_end_ns / window_start_ns.
 topics::Attitude to_topic(const Estimate& e, const std::string& tool_id);
+// The inverse, for whoever reads attitude back (surveys, exports); the tool id stays on the message.
+Estimate from_topic(const topics::Attitude& a);
 // A navigator's estimate (Estimate::navigation) on plumb/navigation/<estimator>.
 topics::Navigation to_navigation(const Estimate& e, const std::string& tool_id);
 // The measured depth a sample carries (flags::kHasDepth), for plumb/depth.
