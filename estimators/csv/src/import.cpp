@@ -8,9 +8,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
-#include <numeric>
 #include <stdexcept>
 
+#include "plumb/core/edit_distance.hpp"
 #include "plumb/core/number.hpp"
 
 namespace plumb::csv {
@@ -68,21 +68,6 @@ std::vector<std::string> split_on(const std::string& text, const std::string& se
 std::string lower(std::string s) {
   for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return s;
-}
-
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  std::iota(row.begin(), row.end(), std::size_t{0});
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
 }
 
 const std::string kAxesUsage =

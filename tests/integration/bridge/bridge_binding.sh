@@ -14,8 +14,7 @@ source "$here/../lib.sh"
 source "$here/../wait.sh"
 work=$(mktemp -d)
 pids=()
-cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; rm -rf "$work"; }
-trap cleanup EXIT
+trap stop_programs_and_remove_work EXIT
 show_logs() { for f in "$work"/*.out; do echo "--- $f"; tail -20 "$f"; done; }
 cd "$work"
 

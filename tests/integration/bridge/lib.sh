@@ -3,6 +3,7 @@
 source "$(dirname "${BASH_SOURCE[0]}")/../wait.sh"
 work=$(mktemp -d)
 pids=()
+# On exit: stop the programs still running (kill fails, harmlessly, for one that already ended).
 cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; rm -rf "$work"; }
 trap cleanup EXIT
 fails=0

@@ -11,6 +11,7 @@ export PLUMB_DOMAIN_ID=$3
 source "$(dirname "$0")/../wait.sh"
 work=$(mktemp -d)
 pids=()
+# On exit: stop the programs still running (kill fails, harmlessly, for one that already ended).
 cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; rm -rf "$work"; }
 trap cleanup EXIT
 show_logs() { for f in "$work"/*.out; do echo "--- $f"; cat "$f"; done; }

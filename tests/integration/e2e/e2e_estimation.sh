@@ -8,6 +8,7 @@ export PLUMB_DOMAIN_ID=$5
 here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 pids=()
+# On exit: stop the programs still running (kill fails, harmlessly, for one that already ended).
 cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; rm -rf "$work"; }
 trap cleanup EXIT
 

@@ -11,6 +11,7 @@ export PLUMB_DOMAIN_ID=$5
 work=$(mktemp -d)
 pids=()
 # Processes that already ended cannot be killed: that is not an error here.
+# On exit: stop the programs still running (kill fails, harmlessly, for one that already ended).
 cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; rm -rf "$work"; }
 trap cleanup EXIT
 run=(--scenario drilling --grade tactical --rate-hz 10 --latitude 35 --seed 3)

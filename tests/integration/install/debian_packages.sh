@@ -13,8 +13,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../wait.sh"
 work=$(mktemp -d)
 pids=()
-cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null; done; rm -rf "$work"; }
-trap cleanup EXIT
+trap stop_programs_and_remove_work EXIT
 command -v dpkg-deb > /dev/null || { echo "dpkg-deb not found: skipped"; exit 77; }
 
 start=$(date +%s)

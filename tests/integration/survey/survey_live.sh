@@ -15,8 +15,7 @@ source "$here/../lib.sh"
 source "$here/../wait.sh"
 work=$(mktemp -d)
 pids=()
-cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; rm -rf "$work"; }
-trap cleanup EXIT
+trap stop_programs_and_remove_work EXIT
 tool=drilling-survey
 survey_args=(--transport "$survey_t" --tool-id "$tool" --file "$work/survey.csv" --plugin static
              --gravity 9.80665 --total-field 50 --dip 60)
@@ -39,6 +38,7 @@ pids+=($sim)
 
 # Third station (index 2) on disk: kill -9, restart at once.
 wait_for "$work/survey.csv" "^2," 60 || { echo "no third station:"; cat "$work/survey1.err" "$work/survey1.out"; exit 1; }
+# wait returns 137 for the killed process: that status is the kill itself, not a failure.
 { kill -9 "$first"; wait "$first"; } 2>/dev/null || true
 "$bin/plumb-survey" "${survey_args[@]}" > "$work/survey2.out" 2> "$work/survey2.err" &
 pids+=($!)

@@ -12,8 +12,7 @@ source "$here/../lib.sh"
 source "$here/../wait.sh"
 work=$(mktemp -d)
 pids=()
-cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; rm -rf "$work"; }
-trap cleanup EXIT
+trap stop_programs_and_remove_work EXIT
 
 "$bin/plumb-survey" --tool-id t1 --file "$work/survey.csv" --gravity 9.80665 --total-field 50 --dip 60 \
   > "$work/out" 2> "$work/err" &
