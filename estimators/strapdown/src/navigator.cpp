@@ -178,6 +178,15 @@ bool Navigator::accept(const Sample& s, Input& in) {
     in.b = s.b;
     saw_mag_ = true;
   }
+  // still_detector=auto: the magnitude test leans on |B|. A stream whose first sample has no
+  // field (no bx,by,bz columns, or a tool without magnetometers) gets the GLRT, as
+  // use_magnetometer=0 does.
+  if (!last_t_ && !in.b && config_.detector == DetectorChoice::Auto &&
+      detector_.config().mode == StillnessConfig::Mode::Magnitude) {
+    StillnessConfig sc = detector_.config();
+    sc.mode = StillnessConfig::Mode::Glrt;
+    detector_.configure(sc);
+  }
   if ((s.flags & flags::kHasDepth) != 0 && std::isfinite(s.depth_m)) in.depth = s.depth_m;
   if (last_t_) {
     const double dt = s.t - *last_t_;
@@ -501,9 +510,11 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
     still_updates(false);
   } else {
     if (still_state_.ended) still_updates(true);
-    const Measurement<2> m = lateral_velocity(x_, config_.nhc_sd);
-    apply(kf_.update(m.r, m.h, m.noise));
-    count("lateral_velocity_updates");
+    if (config_.lateral_velocity_update) {
+      const Measurement<2> m = lateral_velocity(x_, config_.nhc_sd);
+      apply(kf_.update(m.r, m.h, m.noise));
+      count("lateral_velocity_updates");
+    }
   }
   if (latest_depth_ && have_depth0_ && in.t - last_depth_update_t_ >= config_.depth_interval_s - 0.5 * dt_nominal_) {
     const Measurement<1> m = along_hole_distance(x_, *latest_depth_ - depth0_, config_.depth_sd);

@@ -75,6 +75,7 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"zupt_sd_mps", "0.001", "velocity of a still tool, 1 sigma (m/s)"},
       {"zero_rate_interval_s", "1", "gyro data averaged per zero-rate update at stops (s)"},
       {"tilt_update", "0", "separate accelerometer tilt update at stops (1: counts the accelerometer noise twice with the zero-velocity updates)"},
+      {"lateral_velocity_update", "1", "while moving, lateral velocity zero in the tool frame (a drilling tool; 0 for a foot, hand-carried or vehicle-mounted sensor)"},
       {"nhc_sd_mps", "0.01", "lateral velocity of a drilling tool, 1 sigma (m/s)"},
       {"depth_sd_m", "0.01", "measured depth noise, 1 sigma (m)"},
       {"depth_interval_s", "1", "seconds between measured-depth updates"},
@@ -149,6 +150,7 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   c.zupt_sd = r.number("zupt_sd_mps", 1e-9, 10);
   c.zaru_interval_s = r.number("zero_rate_interval_s", 0, 3600);
   c.tilt_update = r.boolean("tilt_update");
+  c.lateral_velocity_update = r.boolean("lateral_velocity_update");
   c.nhc_sd = r.number("nhc_sd_mps", 1e-9, 10);
   c.depth_sd = r.number("depth_sd_m", 1e-9, 100);
   c.depth_interval_s = r.number("depth_interval_s", 0, 3600);

@@ -82,5 +82,24 @@ TEST(StrapdownDrilling, NoMagnetometerWithInitialAzimuth) {
   EXPECT_EQ(counters.at("still_periods"), 5u);
 }
 
+// Issue 18 item 5: the backward smoother in the no-magnetometer mode: every row at flush, the
+// azimuth still inside its (smoothed) sigma, no worse than the forward filter anywhere.
+TEST(StrapdownDrilling, SmootherWithoutMagnetometer) {
+  auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 100, 5);
+  scenario.magnetometer.present = false;
+  auto params = parameters_for(scenario);
+  params["initial_azimuth_deg"] = std::to_string(scenario.plan.azimuth_deg);
+  const RunMetrics forward = run_drilling(scenario, params);
+  params["smooth"] = "1";
+  const RunMetrics smoothed = run_drilling(scenario, params);
+  print("no magnetometer, forward", forward);
+  print("no magnetometer, smoothed", smoothed);
+  EXPECT_EQ(smoothed.valid_rows, forward.valid_rows);
+  EXPECT_LE(smoothed.max_inc_err_deg, 0.2);
+  EXPECT_LE(smoothed.max_azi_err_deg, forward.max_azi_err_deg * 1.05 + 1e-3);
+  EXPECT_LT(std::abs(smoothed.end_azi_err_deg), 3.0 * smoothed.end_azi_sd_deg);
+  EXPECT_LT(smoothed.rms_z(), 2.0);
+}
+
 }  // namespace
 }  // namespace plumb::strapdown::test

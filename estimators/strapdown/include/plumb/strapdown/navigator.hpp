@@ -67,6 +67,9 @@ struct NavigatorConfig {
   double zupt_sd = 1e-3;               // m/s
   double zaru_interval_s = 1;          // gyro means per zero-rate update
   bool tilt_update = false;            // separate accelerometer tilt update at stops
+  // While moving, lateral velocity zero in the tool frame: a drilling tool moves along its axis;
+  // a foot, a hand-carried or a vehicle-mounted sensor does not.
+  bool lateral_velocity_update = true;
   double nhc_sd = 0.01;                // m/s
   double depth_sd = 0.01;              // m
   double depth_interval_s = 1;
