@@ -23,26 +23,58 @@ StateMatrix ErrorStateFilter::transition(const StepIntegrals& in, const Eigen::V
   f.block<1, 3>(kDistance, kAtt) = (in.axis_cross_v / dt).transpose();
   f.block<1, 3>(kDistance, kVel) = (in.axis_n / dt).transpose();
   const StateMatrix fdt = f * dt;
-  phi += fdt + 0.5 * fdt * fdt;
+  // F's columns 6-8 and 15 are zero, and its rows 6-15 hold only the identity block of dp' = dv
+  // and the distance row: (F dt)^2 = (F dt)(:, 0:5) (F dt)(0:5, :), a sixth of the inner products.
+  phi += fdt;
+  phi.noalias() += 0.5 * fdt.leftCols<6>().lazyProduct(fdt.topRows<6>());
   return phi;
 }
 
-StateMatrix ErrorStateFilter::process_noise(const StateMatrix& phi, double dt, const ProcessNoise& n) {
+namespace {
+
+// The white noises over dt. They enter through C (a rotation), and are the same on each axis:
+// C q I C' = q I, so Q is diagonal.
+StateVector white_noise(double dt, const ProcessNoise& n) {
   StateVector q = StateVector::Zero();
-  // The white noises enter through C (a rotation), and are the same on each axis: C q I C' = q I,
-  // so q is diagonal and phi q phi' is one matrix product.
   q.segment<3>(kAtt).setConstant(n.gyro_arw * n.gyro_arw * dt);
   q.segment<3>(kVel).setConstant(n.accel_vrw * n.accel_vrw * dt);
   q.segment<3>(kGyroBias).setConstant(n.gyro_bias_walk * n.gyro_bias_walk * dt);
   q.segment<3>(kAccelBias).setConstant(n.accel_bias_walk * n.accel_bias_walk * dt);
-  StateMatrix qd = (phi * q.asDiagonal()) * phi.transpose();
+  return q;
+}
+
+}  // namespace
+
+StateMatrix ErrorStateFilter::sandwich(const StateMatrix& phi, const StateMatrix& m) {
+  StateMatrix pm = m;
+  pm.topRows<9>().noalias() = phi.topRows<9>().lazyProduct(m);
+  pm.row(kDistance).noalias() = phi.row(kDistance).lazyProduct(m);
+  StateMatrix out = pm;
+  out.leftCols<9>().noalias() = pm.lazyProduct(phi.topRows<9>().transpose());
+  out.col(kDistance).noalias() = pm.lazyProduct(phi.row(kDistance).transpose());
+  return out;
+}
+
+StateMatrix ErrorStateFilter::process_noise(const StateMatrix& phi, double dt, const ProcessNoise& n) {
+  const StateVector q = white_noise(dt, n);
+  StateMatrix qd = sandwich(phi, StateMatrix(q.asDiagonal()));
   qd.diagonal() += q;
   qd *= 0.5;
   return 0.5 * (qd + qd.transpose());
 }
 
-void ErrorStateFilter::predict(const StateMatrix& phi, const StateMatrix& q) {
-  p_ = phi * p_ * phi.transpose() + q;
+StateMatrix ErrorStateFilter::predicted_covariance(const StateMatrix& phi, const StateMatrix& p, double dt,
+                                                   const ProcessNoise& noise) {
+  const StateVector half_q = 0.5 * white_noise(dt, noise);
+  StateMatrix m = p;
+  m.diagonal() += half_q;
+  StateMatrix out = sandwich(phi, m);
+  out.diagonal() += half_q;
+  return out;
+}
+
+void ErrorStateFilter::predict(const StateMatrix& phi, double dt, const ProcessNoise& noise) {
+  p_ = predicted_covariance(phi, p_, dt, noise);
   symmetrize();
 }
 

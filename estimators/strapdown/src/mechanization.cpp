@@ -9,11 +9,14 @@ Mechanization::Mechanization(const Eigen::Vector3d& w_ie_n, double g) : w_ie_(w_
 
 // dq/dt for C_b^n: C' = C [w_ib x] - [w_ie x] C, i.e. q' = q (0, w_ib) / 2 - (0, w_ie) q / 2.
 // Quaternions as (w, x, y, z) in a Vector4d so that Runge-Kutta stages add as vectors.
+// With q = (s, v): q (0, w) = (-v.w, s w + v x w) and (0, e) q = (-e.v, s e + e x v), so
+// 2 q' = (v.(e - w), s (w - e) + v x w + v x e): two cross products, no quaternion objects.
 Eigen::Vector4d Mechanization::attitude_rate(const Eigen::Vector4d& q, const Eigen::Vector3d& w) const {
-  const Eigen::Quaterniond qq(q[0], q[1], q[2], q[3]);
-  const Eigen::Quaterniond body = qq * Eigen::Quaterniond(0.0, w.x(), w.y(), w.z());
-  const Eigen::Quaterniond earth = Eigen::Quaterniond(0.0, w_ie_.x(), w_ie_.y(), w_ie_.z()) * qq;
-  return 0.5 * Eigen::Vector4d(body.w() - earth.w(), body.x() - earth.x(), body.y() - earth.y(), body.z() - earth.z());
+  const Eigen::Vector3d v = q.tail<3>();
+  const Eigen::Vector3d vector = q[0] * (w - w_ie_) + v.cross(w + w_ie_);
+  Eigen::Vector4d rate;
+  rate << 0.5 * v.dot(w_ie_ - w), 0.5 * vector;
+  return rate;
 }
 
 void Mechanization::step(NavState& state, const ImuReading& a, const ImuReading& b, StepIntegrals* integrals,
@@ -25,14 +28,16 @@ void Mechanization::step(NavState& state, const ImuReading& a, const ImuReading&
   // curvature (its coefficients stay within [-1/8, 1] only while the spacings are alike).
   const double previous_dt = before != nullptr ? a.t - before->t : 0.0;
   const bool parabola = before != nullptr && previous_dt > 0.5 * dt && previous_dt < 2.0 * dt;
-  const double t0 = parabola ? before->t : 0.0;
+  // The parabola's Lagrange weights in s = t - a.t: l0 = s (s - dt) / d0, l1 = (s + p)(s - dt) / d1,
+  // l2 = (s + p) s / d2 (p = previous_dt), the denominators once per step.
+  const double inv_d0 = parabola ? 1.0 / (previous_dt * (previous_dt + dt)) : 0.0;
+  const double inv_d1 = parabola ? -1.0 / (previous_dt * dt) : 0.0;
+  const double inv_d2 = parabola ? 1.0 / ((previous_dt + dt) * dt) : 0.0;
   auto rate = [&](double u) -> Eigen::Vector3d {
     if (!parabola) return a.w + (b.w - a.w) * u;
-    const double t = a.t + u * dt;
-    const double l0 = (t - a.t) * (t - b.t) / ((t0 - a.t) * (t0 - b.t));
-    const double l1 = (t - t0) * (t - b.t) / ((a.t - t0) * (a.t - b.t));
-    const double l2 = (t - t0) * (t - a.t) / ((b.t - t0) * (b.t - a.t));
-    return l0 * before->w + l1 * a.w + l2 * b.w;
+    const double s = u * dt;
+    return (s * (s - dt) * inv_d0) * before->w + ((s + previous_dt) * (s - dt) * inv_d1) * a.w +
+           ((s + previous_dt) * s * inv_d2) * b.w;
   };
   const Eigen::Matrix3d c0 = state.q.toRotationMatrix();
   const Eigen::Vector3d v0 = state.v;

@@ -56,6 +56,9 @@ void Navigator::reset() {
         "lateral_velocity_updates", "depth_updates", "rows", "invalid_rows"}) {
     counters_[name] = 0;
   }
+  // Map nodes stay where they are: the per-sample counters are bumped through pointers, not looked up.
+  samples_counter_ = &counters_["samples"];
+  accepted_counter_ = &counters_["accepted"];
   last_t_.reset();
   last_good_w_.reset();
   last_good_f_.reset();
@@ -126,7 +129,7 @@ void Navigator::reset() {
 // ---- input -------------------------------------------------------------------------------------
 
 bool Navigator::accept(const Sample& s, Input& in) {
-  count("samples");
+  ++*samples_counter_;
   const bool has_gyro = (s.flags & flags::kHasGyro) != 0;
   if ((s.flags & flags::kNotFinite) != 0 || !std::isfinite(s.t) || !s.f.allFinite() ||
       (has_gyro && !s.w.allFinite())) {
@@ -199,7 +202,7 @@ bool Navigator::accept(const Sample& s, Input& in) {
     }
   }
   last_t_ = s.t;
-  count("accepted");
+  ++*accepted_counter_;
   return true;
 }
 
@@ -498,7 +501,7 @@ double Navigator::field_azimuth() const { return config_.declination.value_or(0.
 void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   const StateMatrix phi = ErrorStateFilter::transition(integrals_, mech_.earth_rate(), gravity_coupling_);
   const double dt = integrals_.dt;
-  kf_.predict(phi, ErrorStateFilter::process_noise(phi, dt, noise_));
+  kf_.predict(phi, dt, noise_);
   integrals_.clear();
   last_epoch_t_ = in.t;
   correction_.setZero();

@@ -7,6 +7,13 @@ namespace plumb::strapdown {
 
 void StillnessDetector::reset() {
   window_.clear();
+  f_sum_.setZero();
+  w_sum_.setZero();
+  f_square_sum_ = w_excess_square_sum_ = 0;
+  excess_tol_ = -1;
+  f_dev_max_.clear();
+  b_dev_max_.clear();
+  since_resum_ = 0;
   depths_.clear();
   depth_max_.clear();
   depth_min_.clear();
@@ -29,34 +36,59 @@ void StillnessDetector::extend_stretch(const StillnessInput& in) {
   stretch_f_ += a * (in.f - stretch_f_);
 }
 
-void StillnessDetector::measure_window(double g, double extra_gyro_tol) {
-  const double n = static_cast<double>(window_.size());
-  Eigen::Vector3d f_sum = Eigen::Vector3d::Zero(), w_sum = Eigen::Vector3d::Zero();
-  double f_square_sum = 0, w_excess_square_sum = 0, f_dev = 0, b_dev = 0;
+void StillnessDetector::add_to_sums(const Entry& e) {
+  f_sum_ += e.f;
+  w_sum_ += e.w;
+  f_square_sum_ += e.f.squaredNorm();
+  if (excess_tol_ >= 0) w_excess_square_sum_ += rate_excess(e.w_norm, excess_tol_);
+  const double f_dev = std::abs(e.f_dev), b_dev = std::abs(e.b_dev);
+  while (!f_dev_max_.empty() && f_dev_max_.back().second <= f_dev) f_dev_max_.pop_back();
+  f_dev_max_.emplace_back(e.sequence, f_dev);
+  while (!b_dev_max_.empty() && b_dev_max_.back().second <= b_dev) b_dev_max_.pop_back();
+  b_dev_max_.emplace_back(e.sequence, b_dev);
+}
+
+void StillnessDetector::remove_from_sums(const Entry& e) {
+  f_sum_ -= e.f;
+  w_sum_ -= e.w;
+  f_square_sum_ -= e.f.squaredNorm();
+  if (excess_tol_ >= 0) w_excess_square_sum_ -= rate_excess(e.w_norm, excess_tol_);
+  while (!f_dev_max_.empty() && f_dev_max_.front().first <= e.sequence) f_dev_max_.pop_front();
+  while (!b_dev_max_.empty() && b_dev_max_.front().first <= e.sequence) b_dev_max_.pop_front();
+}
+
+void StillnessDetector::resum(double extra_gyro_tol) {
+  f_sum_.setZero();
+  w_sum_.setZero();
+  f_square_sum_ = w_excess_square_sum_ = 0;
+  excess_tol_ = extra_gyro_tol;
   for (const Entry& e : window_) {
-    f_sum += e.f;
-    w_sum += e.w;
-    f_square_sum += e.f.squaredNorm();
-    // The rate energy counts only what exceeds the caller's ignorance of w_expected (before
-    // alignment the whole earth rate): a navigation-grade gyro's noise is far below the earth rate.
-    const double w_excess = std::max(0.0, e.w.norm() - extra_gyro_tol);
-    w_excess_square_sum += w_excess * w_excess;
-    f_dev = std::max(f_dev, std::abs(e.f_dev));
-    b_dev = std::max(b_dev, std::abs(e.b_dev));
+    f_sum_ += e.f;
+    w_sum_ += e.w;
+    f_square_sum_ += e.f.squaredNorm();
+    w_excess_square_sum_ += rate_excess(e.w_norm, excess_tol_);
   }
-  window_f_mean_ = f_sum / n;
-  window_w_mean_norm_ = (w_sum / n).norm();
+  since_resum_ = 0;
+}
+
+void StillnessDetector::measure_window(double g, double extra_gyro_tol) {
+  // The rate energy counts only what exceeds the caller's ignorance of w_expected (before
+  // alignment the whole earth rate): a navigation-grade gyro's noise is far below the earth rate.
+  if (extra_gyro_tol != excess_tol_ || since_resum_ >= kResumEvery) resum(extra_gyro_tol);
+  const double n = static_cast<double>(window_.size());
+  window_f_mean_ = f_sum_ / n;
+  window_w_mean_norm_ = (w_sum_ / n).norm();
   window_gyro_allowance_ = config_.gyro_tol + extra_gyro_tol + 4.0 * config_.sigma_w / std::sqrt(n);
-  window_b_dev_ = b_dev;
+  window_b_dev_ = b_dev_max_.front().second;
   if (config_.mode == StillnessConfig::Mode::Glrt) {
-    // sum |f - g u|^2 over the window, u the direction of the mean force, expanded so that one pass
-    // suffices: sum |f|^2 - 2 g u.sum f + n g^2 (u.sum f = n |mean f|).
+    // sum |f - g u|^2 over the window, u the direction of the mean force, expanded so that the
+    // running sums suffice: sum |f|^2 - 2 g u.sum f + n g^2 (u.sum f = n |mean f|).
     const double fn = window_f_mean_.norm();
-    const double force_energy = std::max(0.0, f_square_sum - 2.0 * g * n * fn + n * g * g);
+    const double force_energy = std::max(0.0, f_square_sum_ - 2.0 * g * n * fn + n * g * g);
     const double ia = 1.0 / (config_.sigma_a * config_.sigma_a), iw = 1.0 / (config_.sigma_w * config_.sigma_w);
-    last_statistic_ = (force_energy * ia + w_excess_square_sum * iw) / n;
+    last_statistic_ = (force_energy * ia + std::max(0.0, w_excess_square_sum_) * iw) / n;
   } else {
-    last_statistic_ = f_dev;
+    last_statistic_ = f_dev_max_.front().second;
   }
 }
 
@@ -82,9 +114,12 @@ StillnessState StillnessDetector::update(const StillnessInput& in) {
   StillnessState out;
   if (!window_.empty() && in.t > last_t_) last_dt_ = in.t - last_t_;
   last_t_ = in.t;
-  window_.push_back({in.t, in.f, in.w_minus_expected, in.f.norm() - in.g,
-                     in.field_deviation_uT.value_or(0.0)});
+  window_.push_back({in.t, in.f, in.w_minus_expected, in.f.norm() - in.g, in.field_deviation_uT.value_or(0.0),
+                     in.w_minus_expected.norm(), entry_count_++});
+  add_to_sums(window_.back());
+  ++since_resum_;
   while (window_.size() > StillnessConfig::kMinWindowSamples && window_.front().t < in.t - config_.window_s) {
+    remove_from_sums(window_.front());
     window_.pop_front();
   }
   bool depth_ok = true, depth_ok_exit = true;

@@ -128,10 +128,46 @@ TEST(ErrorStateFilter, AttitudeVarianceGrowsAsGyroModelSays) {
     step.c_bn = c * dt;
     step.f_n = Eigen::Vector3d(0, 0, -9.8) * dt;
     const StateMatrix phi = ErrorStateFilter::transition(step, Eigen::Vector3d::Zero());
-    kf.predict(phi, ErrorStateFilter::process_noise(phi, dt, noise));
+    kf.predict(phi, dt, noise);
   }
   const double expected = sigma_b * sigma_b * t_end * t_end + arw * arw * t_end;
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(kf.covariance()(i, i), expected, 0.01 * expected);
+}
+
+// The structured products of the filter equal the plain ones they replace: the transition's
+// bias rows are the identity's, so phi M phi' needs ten rows and columns; the multiplied-out
+// Joseph form equals (I-KH) P (I-KH)' + K R K'.
+TEST(ErrorStateFilterAlgebra, StructuredProductsEqualThePlainOnes) {
+  StepIntegrals step;
+  step.dt = 0.05;
+  step.c_bn = c_nb(0.3, 1.2, -0.7).transpose() * step.dt;
+  step.f_n = Eigen::Vector3d(1.1, -0.4, -9.7) * step.dt;
+  step.axis_n = Eigen::Vector3d(0.2, 0.3, 0.93) * step.dt;
+  step.axis_cross_v = Eigen::Vector3d(0.01, -0.02, 0.005) * step.dt;
+  const Eigen::Vector3d w_ie(5e-5, 0, -5e-5);
+  const StateMatrix phi = ErrorStateFilter::transition(step, w_ie, Eigen::Vector3d(0.1, 0.2, 0.97));
+  const StateMatrix a = StateMatrix::Random();
+  const StateMatrix p = a * a.transpose() + StateMatrix::Identity();
+  const StateMatrix plain = phi * p * phi.transpose();
+  EXPECT_LT((ErrorStateFilter::sandwich(phi, p) - plain).norm(), 1e-12 * plain.norm());
+
+  ProcessNoise noise;
+  noise.gyro_arw = 1e-4;
+  noise.accel_vrw = 2e-3;
+  noise.gyro_bias_walk = 1e-6;
+  noise.accel_bias_walk = 1e-5;
+  const StateMatrix predicted = plain + ErrorStateFilter::process_noise(phi, step.dt, noise);
+  EXPECT_LT((ErrorStateFilter::predicted_covariance(phi, p, step.dt, noise) - predicted).norm(), 1e-12 * predicted.norm());
+
+  ErrorStateFilter kf;
+  kf.reset(p);
+  const Eigen::Matrix<double, 3, kStates> h = Eigen::Matrix<double, 3, kStates>::Random();
+  const Eigen::Matrix3d r = Eigen::Vector3d(0.1, 0.2, 0.3).asDiagonal();
+  const Eigen::Matrix<double, kStates, 3> k = p * h.transpose() * (h * p * h.transpose() + r).inverse();
+  const StateMatrix ikh = StateMatrix::Identity() - k * h;
+  const StateMatrix joseph = ikh * p * ikh.transpose() + k * r * k.transpose();
+  kf.update<3>(Eigen::Vector3d(0.1, -0.2, 0.3), h, r);
+  EXPECT_LT((kf.covariance() - joseph).norm(), 1e-10 * joseph.norm());
 }
 
 }  // namespace

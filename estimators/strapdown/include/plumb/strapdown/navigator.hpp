@@ -82,6 +82,11 @@ struct NavigatorConfig {
 class Navigator {
  public:
   explicit Navigator(const NavigatorConfig& config = {});
+  // Counter pointers point into counters_: a copy would bump the original's; a move keeps the nodes.
+  Navigator(const Navigator&) = delete;
+  Navigator& operator=(const Navigator&) = delete;
+  Navigator(Navigator&&) = default;
+  Navigator& operator=(Navigator&&) = default;
   void configure(const NavigatorConfig& config);
   // Samples oldest first; appends the rows they complete (none in smoothing mode).
   void push(const Sample& s, std::vector<Estimate>& out);
@@ -129,6 +134,8 @@ class Navigator {
 
   NavigatorConfig config_;
   std::map<std::string, std::uint64_t> counters_;
+  std::uint64_t* samples_counter_ = nullptr;
+  std::uint64_t* accepted_counter_ = nullptr;
   // Input.
   std::optional<double> last_t_;
   std::optional<Eigen::Vector3d> last_good_w_, last_good_f_;

@@ -71,7 +71,7 @@ void RtsSmoother::smooth(const ProcessNoise& noise, Visit&& visit) const {
     const Epoch& next = epochs_[k + 1];
     const StateMatrix pk = covariance(epochs_[k]);
     const StateMatrix phi = Eigen::Map<const StateMatrix>(next.phi);
-    const StateMatrix pred = phi * pk * phi.transpose() + ErrorStateFilter::process_noise(phi, next.dt, noise);
+    const StateMatrix pred = ErrorStateFilter::predicted_covariance(phi, pk, next.dt, noise);
     // G = P Phi' pred^-1, i.e. G' = pred^-1 Phi P (pred is symmetric positive definite).
     const StateMatrix g = pred.ldlt().solve(phi * pk).transpose();
     const StateVector c = Eigen::Map<const StateVector>(next.correction);

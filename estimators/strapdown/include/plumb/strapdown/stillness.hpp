@@ -21,6 +21,7 @@
 // threshold.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <deque>
 #include <optional>
@@ -84,14 +85,33 @@ class StillnessDetector {
     double t;
     Eigen::Vector3d f, w;
     double f_dev, b_dev;
+    double w_norm;
+    std::uint64_t sequence;
   };
-  // One pass over the window per sample; window_quiet then compares at any threshold factor.
+  // The window's statistics from running sums (O(1) per sample); window_quiet then compares at any
+  // threshold factor.
   void measure_window(double g, double extra_gyro_tol);
+  void add_to_sums(const Entry& e);
+  void remove_from_sums(const Entry& e);
+  void resum(double extra_gyro_tol);
+  static double rate_excess(double w_norm, double tol) {
+    const double x = std::max(0.0, w_norm - tol);
+    return x * x;
+  }
   bool window_quiet(double factor) const;
   bool period_quiet(double factor, double extra_gyro_tol) const;
 
   StillnessConfig config_;
   std::deque<Entry> window_;
+  // Running sums over window_; the rate energy counts what exceeds excess_tol_ (re-summed when the
+  // caller's tolerance changes, at filter epochs), and every kResumEvery samples all are re-summed
+  // so that rounding cannot build up. Largest |f_dev| and |b_dev| by monotonic queues of
+  // (sequence, value).
+  Eigen::Vector3d f_sum_ = Eigen::Vector3d::Zero(), w_sum_ = Eigen::Vector3d::Zero();
+  double f_square_sum_ = 0, w_excess_square_sum_ = 0, excess_tol_ = -1;
+  std::deque<std::pair<std::uint64_t, double>> f_dev_max_, b_dev_max_;
+  std::uint64_t entry_count_ = 0, since_resum_ = 0;
+  static constexpr std::uint64_t kResumEvery = 4096;
   // The depths of the last depth_window_s (time, depth) and, for their range in O(1) per sample,
   // monotonic queues of (sequence number, depth): the largest and smallest still in the window.
   std::deque<std::pair<double, double>> depths_;
