@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "compare_file.hpp"
 #include "plumb/components/cli.hpp"
 #include "fields.hpp"
 #include "plumb/compare/compare.hpp"
@@ -147,7 +148,8 @@ void add_compare_command(CLI::App& app) {
   auto o = std::make_shared<CompareOptions>();
   auto* cmd = app.add_subcommand("compare",
                                  "Run estimator plugins over a grid of simulated scenarios (default: the source paper's "
-                                 "reference grid) and print RMS and maximum errors beside the Cramér–Rao bound");
+                                 "reference grid) and print RMS and maximum errors beside the Cramér–Rao bound; with "
+                                 "--input, on a recorded run instead");
   cmd->add_option("-e,--estimator,--plugin", o->estimators, "plugins to compare (--plugin, as for plumb-estimator, is the same)")->capture_default_str();
   cmd->add_option("--inclination", o->inclinations, "inclinations, deg")->capture_default_str();
   cmd->add_option("--rpm", o->rpms, "platform speeds, rpm")->capture_default_str();
@@ -176,9 +178,36 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("--drilling-rate-hz", o->drilling_rates, "drilling: sampling rates, Hz")->capture_default_str();
   cmd->add_option("--depth", o->depth, "drilling: with measured depth (yes), without (no), or both")->capture_default_str();
   cmd->add_flag("--no-magnetometer", o->no_magnetometer, "drilling: the tool has no magnetometer");
+  // On a recorded run instead of simulated ones.
+  auto f = std::make_shared<CompareFileOptions>();
+  cmd->add_option("-i,--input", f->input,
+                  "compare the plugins on this sensor CSV or MCAP recording instead of simulated runs (no truth: each "
+                  "plugin's spread and sigma, and its agreement with the first plugin)");
+  cmd->add_option("-t,--topic", f->topic, "--input: sensor topic of a recording (default: plumb/sensor/calibrated, else plumb/sensor/raw)");
+  cmd->add_option("-w,--window", f->window_s, "--input: estimator window, s (0: the whole file)")->capture_default_str();
+  cmd->add_option("--match", f->match_s, "--input: rows of two plugins are compared when their times are at most this far apart, s")
+      ->capture_default_str();
+  cmd->add_flag("--skip-bad-rows", f->skip_bad_rows, "--input: report and skip bad CSV rows instead of stopping");
+  components::add_import_options(*cmd, f->import);
   auto* estimator_option = cmd->get_option("--estimator");
-  cmd->callback([o, estimator_option] {
-    g_exit_code = o->scenario == "drilling" ? run_drilling(*o, estimator_option->count() > 0) : run(*o);
+  cmd->callback([o, f, cmd, estimator_option] {
+    if (f->input.empty()) {
+      for (const char* file_only : {"--topic", "--window", "--match", "--skip-bad-rows", "--column", "--units", "--axes"})
+        if (cmd->get_option(file_only)->count() > 0)
+          throw std::invalid_argument(std::string(file_only) + " applies to --input (a recorded run)");
+      g_exit_code = o->scenario == "drilling" ? run_drilling(*o, estimator_option->count() > 0) : run(*o);
+      return;
+    }
+    for (const char* simulation_only : {"--scenario", "--inclination", "--rpm", "--snr-accel", "--snr-mag", "--azimuth", "--seeds",
+                                        "--seed", "--profile", "--duration", "--rate-hz", "--g", "--field", "--dip",
+                                        "--accel-bias", "--mag-bias", "--plots", "--grade", "--drilling-rate-hz", "--depth",
+                                        "--no-magnetometer"})
+      if (cmd->get_option(simulation_only)->count() > 0)
+        throw std::invalid_argument(std::string(simulation_only) + " describes simulated runs; it does not apply to --input " + f->input);
+    f->estimators = o->estimators;
+    f->params = o->params;
+    f->csv_path = o->csv_path;
+    g_exit_code = compare_file(*f);
   });
 }
 

@@ -2,14 +2,15 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "plumb/components/cli.hpp"
 #include "plumb/components/import_options.hpp"
 #include "plumb/csv/files.hpp"
-#include "plumb/components/convert.hpp"
 #include "plumb/estimator/loader.hpp"
-#include "recording.hpp"
+#include "sample_input.hpp"
 
 namespace plumb::cli {
 namespace {
@@ -29,26 +30,6 @@ int run_estimate(const EstimateOptions& o) {
   if (o.window_s < 0) throw std::invalid_argument("--window must be >= 0 seconds (0: the whole file)");
   estimator::Runner runner = estimator::load_runner(o.estimators);
   runner.configure(o.params, o.window_s);
-  const csv::Import import = o.import.make();
-
-  // The input: a recording (MCAP, plumb record) or a sensor CSV. A recording streams through
-  // in chunks like a CSV (10 minutes at 10 kHz are 6 million samples: never all in memory).
-  const bool recording = is_recording(o.input);
-  std::ifstream in;
-  std::unique_ptr<csv::SensorReader> reader;
-  if (!recording) {
-    if (!o.topic.empty()) throw std::invalid_argument("--topic applies to a recording (.mcap); " + o.input + " is not one");
-    in.open(o.input);
-    if (!in) throw std::runtime_error("cannot open input '" + o.input + "'");
-    reader = std::make_unique<csv::SensorReader>(in, o.input, import);
-    if (!csv::is_default(import)) std::cerr << "plumb estimate: reading " << o.input << " with " << csv::describe(import) << '\n';
-  }
-  const auto check_gyro = [&](bool has_gyro, const std::string& what) {
-    if (has_gyro) return;
-    for (const auto& name : runner.needing_gyro())
-      throw std::invalid_argument("estimator '" + name + "' needs gyros, and " + o.input + " has no " + what);
-  };
-  if (!recording) check_gyro(reader->has_gyro(), "wx, wy, wz columns");
   bool navigation = false;
   for (const auto& info : runner.infos()) navigation = navigation || info.uses_gyro;
 
@@ -68,54 +49,22 @@ int run_estimate(const EstimateOptions& o) {
     csv::write_attitude_header(*out, navigation);
   };
   const auto write = [&](const estimator::Runner::Slot&, Estimate& e) { csv::write_attitude_row(*out, e, navigation); };
-
-  std::vector<Sample> chunk;
-  std::size_t rows = 0, bad_rows = 0;
-  bool units_checked = false;
-  // The first chunk is the start of the file: seconds of data, enough to tell g from m/s^2.
-  const auto push = [&] {
-    start();
-    if (!units_checked) {
-      for (const auto& warning : csv::check_units(chunk, import)) std::cerr << "plumb estimate: warning: " << warning << '\n';
-      units_checked = true;
-    }
-    runner.push(chunk, write);
-    chunk.clear();
-  };
-  const auto consume = [&](const Sample& s) {
-    ++rows;
-    chunk.push_back(s);
-    if (chunk.size() == 1024) push();
-  };
-  std::string recorded_topic;
-  if (recording) {
-    recorded_topic = read_recorded_batches("plumb estimate", o.input, o.topic, [&](const topics::SensorBatch& batch) {
-      if (rows == 0 && !batch.samples.empty())
-        check_gyro(batch.samples.front().flags & topics::SAMPLE_HAS_GYRO, "gyro samples on its sensor topic");
-      for (const auto& s : batch.samples) consume(components::from_topic(s));
-    });
-  } else {
-    while (true) {
-      Sample s;
-      try {
-        if (!reader->next(s)) break;
-      } catch (const csv::Error& e) {
-        if (!o.skip_bad_rows) throw;
-        ++bad_rows;
-        std::cerr << "plumb estimate: skipped " << e.what() << '\n';
-        continue;
-      }
-      consume(s);
-    }
-  }
-  push();
+  const SampleInput input{"plumb estimate", o.input, o.topic, o.import.make(), o.skip_bad_rows};
+  const SampleInputSummary summary = read_samples(
+      input,
+      [&](bool has_gyro, const std::string& what) {
+        if (has_gyro) return;
+        for (const auto& name : runner.needing_gyro())
+          throw std::invalid_argument("estimator '" + name + "' needs gyros, and " + o.input + " has no " + what);
+      },
+      [&](const std::vector<Sample>& chunk) {
+        start();
+        runner.push(chunk, write);
+      });
   runner.flush(write);
   out->flush();
 
-  std::cerr << "plumb estimate: " << rows << " samples from " << o.input;
-  if (recording) std::cerr << " (" << recorded_topic << ")";
-  if (bad_rows) std::cerr << " (" << bad_rows << " bad rows skipped)";
-  std::cerr << '\n';
+  std::cerr << "plumb estimate: " << summary.describe(o.input) << '\n';
   for (const auto& slot : runner.slots()) {
     std::cerr << "  " << slot.name << ": " << slot.estimates << " estimate(s), " << slot.invalid << " invalid";
     for (const auto& [reason, n] : slot.estimator->counters()) std::cerr << ", " << n << " " << reason;

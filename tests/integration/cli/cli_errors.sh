@@ -13,7 +13,7 @@ for exe in plumb plumb-sim plumb-estimator plumb-bridge plumb-calibrate plumb-su
     fail "$exe is not built"
   fi
 done
-for sub in "topic list" "topic echo" "topic hz" "topic pub" transports plugins estimate record play info export survey status; do
+for sub in "topic list" "topic echo" "topic hz" "topic pub" transports plugins estimate compare record play info export survey status; do
   "$bin/plumb" $sub --help > /dev/null 2>&1 && pass "plumb $sub --help" || fail "plumb $sub --help"
 done
 
@@ -47,6 +47,12 @@ expect_error "estimate: a parameter no plugin has" "--param 'windw'" \
   timeout 30 "$bin/plumb" estimate --estimator static --input /dev/null --param windw=3
 expect_error "estimate: missing input" "cannot open" \
   timeout 30 "$bin/plumb" estimate --estimator compensated --input /nonexistent.csv
+expect_error "compare: missing input" "cannot open" \
+  timeout 30 "$bin/plumb" compare --input /nonexistent.csv
+expect_error "compare: a simulation option with a recorded run" "--seeds describes simulated runs" \
+  timeout 30 "$bin/plumb" compare --input /nonexistent.csv --seeds 3
+expect_error "compare: a recorded-run option without one" "--window applies to --input" \
+  timeout 30 "$bin/plumb" compare --window 3
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

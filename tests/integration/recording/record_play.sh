@@ -44,6 +44,24 @@ PY
   pass "estimate --input run.mcap gives what the exported CSV gives" ||
   fail "estimate: $(cat "$work/est_mcap.csv" "$work/est_csv.csv" "$work/est.err")"
 
+# Compare takes recordings too: the same table from the recording as from its exported CSV.
+"$bin/plumb" compare --input "$work/run.mcap" -e static -e compensated --window 0.5 --csv "$work/cmp_mcap.csv" \
+  > "$work/cmp.out" 2>&1 &&
+  "$bin/plumb" compare --input "$work/sensor.csv" -e static -e compensated --window 0.5 --csv "$work/cmp_csv.csv" \
+  >> "$work/cmp.out" 2>&1 && python3 - "$work/cmp_mcap.csv" "$work/cmp_csv.csv" <<'PY' &&
+import csv, sys
+# 2000 samples at 100 Hz in 0.5 s windows: 40 rows each; the exported CSV rounds to 10 digits.
+a, b = (list(csv.DictReader(open(f))) for f in sys.argv[1:3])
+assert [r["plugin"] for r in a] == ["static", "compensated"] and len(b) == 2, (a, b)
+for ra, rb in zip(a, b):
+    assert ra["rows"] == ra["valid"] == rb["valid"] == "40" and ra["matched"] == "40", (ra, rb)
+    for k in ("inclination_mean_deg", "azimuth_mean_deg", "rms_inclination_diff_deg", "rms_azimuth_diff_deg"):
+        assert abs(float(ra[k]) - float(rb[k])) < 1e-5, (k, ra[k], rb[k])
+    assert abs(float(ra["inclination_mean_deg"]) - 30) < 1e-3 and abs(float(ra["azimuth_mean_deg"]) - 45) < 1e-3, ra
+PY
+  pass "compare --input run.mcap: the exported CSV's table, 40 valid rows per plugin at the truth" ||
+  fail "compare: $(cat "$work/cmp.out" "$work/cmp_mcap.csv" "$work/cmp_csv.csv")"
+
 # Play on the recorder's vendor at x10, received on the simulator's: every batch, same values.
 timeout 60 "$bin/plumb" topic echo plumb/sensor/raw --csv --reliable --count 200 --timeout 40 --transport "$sim_t" \
   > "$work/played.csv" 2> "$work/echo.err" &

@@ -1,0 +1,77 @@
+#include "sample_input.hpp"
+
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+#include "plumb/components/convert.hpp"
+#include "plumb/csv/files.hpp"
+#include "recording.hpp"
+
+namespace plumb::cli {
+
+std::string SampleInputSummary::describe(const std::string& path) const {
+  std::string text = std::to_string(samples) + " samples from " + path;
+  if (recording) text += " (" + topic + ")";
+  if (bad_rows) text += " (" + std::to_string(bad_rows) + " bad rows skipped)";
+  return text;
+}
+
+SampleInputSummary read_samples(const SampleInput& input, const std::function<void(bool, const std::string&)>& on_start,
+                                const std::function<void(const std::vector<Sample>&)>& on_chunk) {
+  SampleInputSummary summary;
+  summary.recording = is_recording(input.path);
+  std::vector<Sample> chunk;
+  bool started = false, units_checked = false;
+  const auto push = [&] {
+    // The first chunk is the start of the file: seconds of data, enough to tell g from m/s^2.
+    if (!units_checked) {
+      for (const auto& warning : csv::check_units(chunk, input.import)) std::cerr << input.program << ": warning: " << warning << '\n';
+      units_checked = true;
+    }
+    on_chunk(chunk);
+    chunk.clear();
+  };
+  const auto consume = [&](const Sample& s) {
+    ++summary.samples;
+    chunk.push_back(s);
+    if (chunk.size() == 1024) push();
+  };
+
+  if (summary.recording) {
+    summary.topic = read_recorded_batches(input.program, input.path, input.topic, [&](const topics::SensorBatch& batch) {
+      if (!started && !batch.samples.empty()) {
+        on_start(batch.samples.front().flags & topics::SAMPLE_HAS_GYRO, "gyro samples on its sensor topic");
+        started = true;
+      }
+      for (const auto& s : batch.samples) consume(components::from_topic(s));
+    });
+  } else {
+    if (!input.topic.empty())
+      throw std::invalid_argument("--topic applies to a recording (.mcap); " + input.path + " is not one");
+    std::ifstream in(input.path);
+    if (!in) throw std::runtime_error("cannot open input '" + input.path + "'");
+    csv::SensorReader reader(in, input.path, input.import);
+    if (!csv::is_default(input.import))
+      std::cerr << input.program << ": reading " << input.path << " with " << csv::describe(input.import) << '\n';
+    on_start(reader.has_gyro(), "wx, wy, wz columns");
+    started = true;
+    while (true) {
+      Sample s;
+      try {
+        if (!reader.next(s)) break;
+      } catch (const csv::Error& e) {
+        if (!input.skip_bad_rows) throw;
+        ++summary.bad_rows;
+        std::cerr << input.program << ": skipped " << e.what() << '\n';
+        continue;
+      }
+      consume(s);
+    }
+  }
+  if (!chunk.empty() || summary.samples == 0) push();
+  return summary;
+}
+
+}  // namespace plumb::cli
