@@ -38,11 +38,7 @@ int compare_file(const CompareFileOptions& o) {
   const SampleInput input{"plumb compare", o.input, o.topic, o.import.make(), o.skip_bad_rows};
   const SampleInputSummary summary = read_samples(
       input,
-      [&](bool has_gyro, const std::string& what) {
-        if (has_gyro) return;
-        for (const auto& name : runner.needing_gyro())
-          throw std::invalid_argument("estimator '" + name + "' needs gyros, and " + o.input + " has no " + what);
-      },
+      require_gyros_for(runner, o.input),
       [&](const std::vector<Sample>& chunk) { runner.push(chunk, keep); });
   runner.flush(keep);
 

@@ -52,11 +52,7 @@ int run_estimate(const EstimateOptions& o) {
   const SampleInput input{"plumb estimate", o.input, o.topic, o.import.make(), o.skip_bad_rows};
   const SampleInputSummary summary = read_samples(
       input,
-      [&](bool has_gyro, const std::string& what) {
-        if (has_gyro) return;
-        for (const auto& name : runner.needing_gyro())
-          throw std::invalid_argument("estimator '" + name + "' needs gyros, and " + o.input + " has no " + what);
-      },
+      require_gyros_for(runner, o.input),
       [&](const std::vector<Sample>& chunk) {
         start();
         runner.push(chunk, write);

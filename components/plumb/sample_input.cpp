@@ -18,6 +18,14 @@ std::string SampleInputSummary::describe(const std::string& path) const {
   return text;
 }
 
+std::function<void(bool, const std::string&)> require_gyros_for(const estimator::Runner& runner, const std::string& path) {
+  return [&runner, path](bool has_gyro, const std::string& what) {
+    if (has_gyro) return;
+    for (const auto& name : runner.needing_gyro())
+      throw std::invalid_argument("estimator '" + name + "' needs gyros, and " + path + " has no " + what);
+  };
+}
+
 SampleInputSummary read_samples(const SampleInput& input, const std::function<void(bool, const std::string&)>& on_start,
                                 const std::function<void(const std::vector<Sample>&)>& on_chunk) {
   SampleInputSummary summary;

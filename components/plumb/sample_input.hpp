@@ -10,6 +10,7 @@
 
 #include "plumb/core/sample.hpp"
 #include "plumb/csv/import.hpp"
+#include "plumb/estimator/runner.hpp"
 
 namespace plumb::cli {
 
@@ -35,5 +36,9 @@ struct SampleInputSummary {
 // std::invalid_argument and std::runtime_error with one-line messages.
 SampleInputSummary read_samples(const SampleInput& input, const std::function<void(bool has_gyro, const std::string& what)>& on_start,
                                 const std::function<void(const std::vector<Sample>&)>& on_chunk);
+
+// An on_start for read_samples that refuses an input without gyros when a plugin of `runner` needs
+// them: "estimator 'strapdown' needs gyros, and run.csv has no wx, wy, wz columns".
+std::function<void(bool, const std::string&)> require_gyros_for(const estimator::Runner& runner, const std::string& path);
 
 }  // namespace plumb::cli
