@@ -47,6 +47,13 @@ expect_error "estimate: a parameter no plugin has" "--param 'windw'" \
   timeout 30 "$bin/plumb" estimate --estimator static --input /dev/null --param windw=3
 expect_error "estimate: missing input" "cannot open" \
   timeout 30 "$bin/plumb" estimate --estimator compensated --input /nonexistent.csv
+nogyro=$(mktemp --suffix=.csv)
+printf 't,fx,fy,fz,bx,by,bz\n0,0,0,-9.8,20,0,40\n' > "$nogyro"
+expect_error "estimate: a navigator on a file without gyros" "estimator 'strapdown' needs gyros, and .* has no wx, wy, wz columns" \
+  timeout 30 "$bin/plumb" estimate --estimator strapdown --input "$nogyro"
+expect_error "compare: a navigator on a file without gyros" "estimator 'strapdown' needs gyros" \
+  timeout 30 "$bin/plumb" compare --input "$nogyro" -e compensated -e strapdown
+rm -f "$nogyro"
 expect_error "compare: missing input" "cannot open" \
   timeout 30 "$bin/plumb" compare --input /nonexistent.csv
 expect_error "compare: a simulation option with a recorded run" "--seeds describes simulated runs" \
