@@ -28,7 +28,9 @@ struct HistoryPoint {
 };
 
 struct HubOptions {
-  std::size_t backlog = 8;                  // estimates kept per tool and estimator for a browser that lags
+  // Estimates kept per tool and estimator for a browser that lags: two seconds of a 30 Hz estimator,
+  // and more than any estimator sends between two frames (30 a second).
+  std::size_t backlog = 64;
   std::size_t max_stations = 10000;         // survey stations kept (and sent to a browser that joins)
   double history_s = 600;                   // history sent to a browser that joins
   double history_step_s = 0.25;             // at most one history point per this many seconds and stream

@@ -11,6 +11,7 @@ export PLUMB_DOMAIN_ID=$5
 artifacts=$6
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../lib.sh"
+. "$here/../wait.sh"
 if ! command -v chromium > /dev/null && ! command -v chromium-browser > /dev/null; then
   echo "skipped: chromium is not installed (apt-get install chromium)"
   exit 77

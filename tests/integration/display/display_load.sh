@@ -8,6 +8,7 @@ bin=$1 t=$2
 export PLUMB_DOMAIN_ID=$3
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../lib.sh"
+. "$here/../wait.sh"
 work=$(mktemp -d)
 pids=()
 trap stop_programs_and_remove_work EXIT
@@ -21,10 +22,12 @@ pids+=($display)
 wait_for "$work/display.log" "serving http://127.0.0.1:[0-9]+/" 20 || { cat "$work/display.log"; fail "plumb-display did not start"; finish; }
 port=$(sed -nE 's|.*serving http://127\.0\.0\.1:([0-9]+)/.*|\1|p' "$work/display.log" | head -1)
 
-expect_error "a second display on the same port" "plumb-display: cannot serve on 127\.0\.0\.1:$port: .*choose another --port" \
+expect_error "a second display on the same port" "plumb-display: cannot serve on 127\.0\.0\.1:$port: Address already in use .*choose another --port" \
   "$bin/plumb-display" --transport "$t" --port "$port"
-expect_error "an address that is not this computer's" "plumb-display: cannot serve on 192\.0\.2\.1:" \
+expect_error "an address that is not this computer's" "plumb-display: cannot serve on 192\.0\.2\.1:0: .*not an address of this computer" \
   "$bin/plumb-display" --transport "$t" --port 0 --bind 192.0.2.1
+expect_error "a --bind that is no address" "plumb-display: cannot serve on rig-floor:0: 'rig-floor' is not an IPv4 address" \
+  "$bin/plumb-display" --transport "$t" --port 0 --bind rig-floor
 expect_error "a port out of range" "plumb-display: --port.*(see plumb-display --help)" "$bin/plumb-display" --port 70000
 code=$(python3 -c "import urllib.request, urllib.error
 try: urllib.request.urlopen('http://127.0.0.1:$port/nosuch.html')
@@ -33,9 +36,9 @@ except urllib.error.HTTPError as e: print(e.code)")
 output_matches "plumb live" python3 -c "import urllib.request; print(urllib.request.urlopen('http://127.0.0.1:$port/').read().decode())" &&
   pass "the page is served at /" || fail "no page at /"
 
-rate=100
+rate=300
 "$bin/plumb" topic pub plumb/attitude/load tool_id=rig9 estimator=load inclination_deg=1.5 azimuth_deg=33 flags=7 \
-  --transport "$t" --rate $rate --count 3000 > "$work/pub.log" 2>&1 &
+  --transport "$t" --rate $rate --count 6000 > "$work/pub.log" 2>&1 &
 pids+=($!)
 wait_for "$work/pub.log" "." 1 || true
 sleep 2  # discovery of the new topic by the display (it looks twice a second)

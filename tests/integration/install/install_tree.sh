@@ -41,6 +41,21 @@ output_matches "cyclonedds" run plumb transports && output_matches "fastdds" run
 output_matches "compensated" run plumb plugins && pass "plumb plugins finds the estimators in the prefix" ||
   fail "plumb plugins: $(run plumb plugins 2>&1)"
 
+# The live display (built where civetweb is): its page is inside the executable, so the installed
+# program serves it with nothing else from the build tree.
+if [ -x "$build/bin/plumb-display" ]; then
+  if [ -x "$prefix/bin/plumb-display" ]; then
+    run plumb-display --transport "$host_t" --port 0 --duration 20 > "$work/display.log" 2>&1 &
+    pids+=($!)
+    for ((i = 0; i < 100; ++i)); do grep -q "serving http" "$work/display.log" && break; sleep 0.1; done
+    port=$(sed -nE 's|.*serving http://127\.0\.0\.1:([0-9]+)/.*|\1|p' "$work/display.log")
+    output_matches "plumb live" python3 -c "import urllib.request; print(urllib.request.urlopen('http://127.0.0.1:${port:-1}/').read().decode())" &&
+      pass "the installed plumb-display serves its page" || fail "installed plumb-display: $(cat "$work/display.log")"
+  else
+    fail "installed tree lacks bin/plumb-display"
+  fi
+fi
+
 # The shipped configuration files for stock applications: the loopback ones are good here; an
 # interface that is not on this computer, and a broken file, are one line each naming file and line.
 config=$prefix/share/plumb/config
