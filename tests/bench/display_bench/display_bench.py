@@ -85,13 +85,15 @@ def main():
         page = chromium_page.Chromium(profile)
         page.call("Page.navigate", url=f"http://127.0.0.1:{port}/")
         time.sleep(3)  # discovery between the programs
-        source = subprocess.run([os.path.join(a.bin, "plumb-bench-display-source"), "--rate", str(a.rate),
-                                 "--seconds", str(a.seconds + 2)], env=env, capture_output=True, text=True, timeout=a.seconds + 30)
-        # The page's own figures over its last 200 estimates, read before the stream ends.
+        source = subprocess.Popen([os.path.join(a.bin, "plumb-bench-display-source"), "--rate", str(a.rate),
+                                   "--seconds", str(a.seconds + 2)], env=env, stderr=subprocess.PIPE, text=True)
+        procs.append(source)
+        time.sleep(a.seconds)
+        # The page's own figures over its last 200 estimates (and 2 s for the rate), read while the stream runs.
         state = page.eval("({age: document.getElementById('age').textContent, latency: document.getElementById('latency').textContent,"
                           " rate: document.getElementById('rate').textContent})")
-        if source.returncode:
-            sys.exit("source failed: " + source.stderr)
+        if source.wait(30):
+            sys.exit("source failed: " + source.stderr.read())
         page.close()
         time.sleep(0.5)
         published = int((a.seconds + 2) * a.rate)

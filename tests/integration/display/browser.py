@@ -3,7 +3,7 @@
 plumb-display's page shows. usage:
   browser.py URL --screenshot OUT.png --expect-key TOOL/ESTIMATOR --inclination I --azimuth A
              [--inc-tol D] [--azi-tol D] [--min-rate R] [--components a,b,...] [--seconds S]
-             [--restart-handshake DIR]
+             [--stations ROWS] [--restart-handshake DIR]
 Prints one line per check ("ok   - ..." / "FAIL - ..."); exit 1 if any failed, 77 without Chromium.
 With --restart-handshake DIR: after the checks it creates DIR/ready, waits for DIR/restarted (the
 caller restarts the server meanwhile), then checks that the page reconnected and shows data again."""
@@ -110,7 +110,7 @@ READ_PAGE = r"""(() => {
           latency: document.getElementById('latency').textContent,
           frames: parseInt(document.getElementById('frames').textContent),
           reconnects: parseInt(document.getElementById('reconnects').textContent),
-          stations: document.querySelectorAll('#survey tbody tr').length};
+          stations: [...document.querySelectorAll('#survey tbody tr')].map(r => [...r.cells].map(c => c.textContent).join('|'))};
 })()"""
 
 
@@ -119,7 +119,7 @@ def read_page(browser):
         return browser.eval(READ_PAGE)
     except RuntimeError:  # the page is still loading
         return {"cards": {}, "rows": [], "link": "", "rate": 0, "age": "-", "latency": "-", "frames": 0, "reconnects": 0,
-                "stations": 0}
+                "stations": []}
 
 
 def wait_for(browser, predicate, seconds):
@@ -154,6 +154,7 @@ def main():
     p.add_argument("--min-rate", type=float, default=10)
     p.add_argument("--components", default="plumb-display,plumb-estimator,plumb-sim")
     p.add_argument("--seconds", type=float, default=3, help="how long to sample the numbers")
+    p.add_argument("--stations", default="", help="'|'-joined cells expected in the survey table, ';' between rows")
     p.add_argument("--restart-handshake")
     a = p.parse_args()
 
@@ -189,6 +190,8 @@ def main():
         check(rate >= a.min_rate, f"update rate measured in the page {rate}/s >= {a.min_rate}/s (latency ms: {state['latency']})")
         for comp in filter(None, a.components.split(",")):
             check(any(r.startswith(comp + "|") for r in state["rows"]), f"status row of {comp} ({state['rows']})")
+        for expected in filter(None, a.stations.split(";")):
+            check(any(expected in r for r in state["stations"]), f"survey station shown: '{expected}' in {state['stations']}")
         png = browser.screenshot(a.screenshot, 1600, 1000)
         check(png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 10000, f"screenshot {a.screenshot}: PNG of {len(png)} bytes")
         phone = re.sub(r"\.png$", "", a.screenshot) + "_phone.png"
