@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--max-rate", o.max_rate, "at most this many updates a second to each browser")->capture_default_str();
   app.add_option("--history", o.history_s, "seconds of history a browser gets when it opens the page")->capture_default_str();
-  app.add_option("--max-browsers", o.web.max_browsers, "browsers served at once (each holds a server thread)")
+  app.add_option("--max-browsers", o.web.max_browsers, "browsers served at once (each holds a server thread); more are refused and their pages retry")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
   app.add_option("--web-root", o.web.web_root, "serve the page from this folder instead of the copy built in (to edit it)")

@@ -74,7 +74,7 @@ std::string listen_failure(const std::string& address, int port) {
 }
 
 int serve_trampoline(mg_connection* conn, void* self) { return static_cast<WebServer*>(self)->serve(conn); }
-int connect_trampoline(const mg_connection*, void*) { return 0; }  // 0: accept
+int connect_trampoline(const mg_connection*, void* self) { return static_cast<WebServer*>(self)->browser_may_connect() ? 0 : 1; }
 void ready_trampoline(mg_connection* conn, void* self) { static_cast<WebServer*>(self)->browser_ready(conn); }
 // The page sends nothing the server needs (it may send keep-alive text); 1 keeps the connection open.
 int data_trampoline(mg_connection*, int, char*, size_t, void*) { return 1; }
@@ -150,6 +150,14 @@ int WebServer::serve(mg_connection* conn) {
   return 404;
 }
 
+bool WebServer::browser_may_connect() {
+  // Beyond --max-browsers a WebSocket is refused (the page retries, up to every 5 s): the worker
+  // threads left are kept for page and stats requests.
+  if (hub_.stats().browsers < static_cast<std::size_t>(options_.max_browsers)) return true;
+  ++refused_;
+  return false;
+}
+
 void WebServer::browser_ready(mg_connection* conn) {
   auto* browser = new Browser;
   browser->outbox = hub_.join();
@@ -180,7 +188,8 @@ std::string WebServer::stats_json() const {
   std::ostringstream out;
   out << "{\"browsers\":" << s.browsers << ",\"browsers_total\":" << s.browsers_total << ",\"attitudes\":" << s.attitudes
       << ",\"statuses\":" << s.statuses << ",\"stations\":" << s.stations << ",\"dropped\":" << s.dropped
-      << ",\"frames_sent\":" << frames_sent_ << ",\"write_failures\":" << write_failures_ << "}";
+      << ",\"frames_sent\":" << frames_sent_ << ",\"write_failures\":" << write_failures_ << ",\"refused\":" << refused_
+      << "}";
   return out.str();
 }
 

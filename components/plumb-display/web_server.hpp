@@ -18,7 +18,7 @@ struct WebOptions {
   std::string bind = "127.0.0.1";
   int port = 8080;           // 0: any free port (port() tells which)
   std::string web_root;      // "": the embedded page
-  int max_browsers = 50;     // each WebSocket holds one civetweb worker thread
+  int max_browsers = 50;     // WebSockets at once (each holds a civetweb worker thread); more are refused
 };
 
 class WebServer {
@@ -37,6 +37,7 @@ class WebServer {
 
   // civetweb's callbacks (public for the C trampolines only).
   int serve(mg_connection* conn);
+  bool browser_may_connect();
   void browser_ready(mg_connection* conn);
   void browser_closed(const mg_connection* conn);
 
@@ -47,7 +48,7 @@ class WebServer {
   Hub& hub_;
   mg_context* context_ = nullptr;
   int port_ = 0;
-  std::atomic<std::uint64_t> frames_sent_{0}, write_failures_{0};
+  std::atomic<std::uint64_t> frames_sent_{0}, write_failures_{0}, refused_{0};
 };
 
 }  // namespace plumb::display_component

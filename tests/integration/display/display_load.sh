@@ -45,4 +45,34 @@ sleep 2  # discovery of the new topic by the display (it looks twice a second)
 python3 "$here/ws_clients.py" "127.0.0.1:$port" "$display" --clients 20 --slow 4 --seconds 8 --publish-rate $rate &&
   pass "20 browsers at once" || fail "20 browsers at once"
 kill -0 "$display" 2>/dev/null && pass "plumb-display still running" || fail "plumb-display died"
+
+# --max-browsers: one more is refused (its page retries), and gets in once a browser leaves.
+"$bin/plumb-display" --transport "$t" --port 0 --max-browsers 2 > "$work/small.log" 2>&1 &
+pids+=($!)
+wait_for "$work/small.log" "serving http://127.0.0.1:[0-9]+/" 20 || fail "second plumb-display did not start"
+small=$(sed -nE 's|.*serving http://127\.0\.0\.1:([0-9]+)/.*|\1|p' "$work/small.log" | head -1)
+PYTHONPATH=$here python3 - "$small" > "$work/small.out" 2>&1 <<'EOF_PY'
+import sys
+from wsclient import WebSocket, Closed
+url = f"ws://127.0.0.1:{sys.argv[1]}/ws"
+two = [WebSocket(url) for _ in range(2)]
+for ws in two:
+    ws.recv()
+try:
+    WebSocket(url, timeout=5).recv()
+    print("third browser served")
+except (Closed, OSError):
+    print("third browser refused")
+two[0].close()
+import time
+for _ in range(50):
+    try:
+        WebSocket(url, timeout=5).recv()
+        print("served after one left")
+        break
+    except (Closed, OSError):
+        time.sleep(0.1)
+EOF_PY
+output_matches "third browser refused" cat "$work/small.out" && output_matches "served after one left" cat "$work/small.out" &&
+  pass "--max-browsers 2: a third is refused, then served once one leaves" || fail "--max-browsers: $(cat "$work/small.out")"
 finish
