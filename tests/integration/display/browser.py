@@ -188,6 +188,9 @@ def main():
         check(distinct > 1, f"the numbers change while the page is open ({distinct} distinct readings)")
         rate = max(rates[len(rates) // 2:], default=0)
         check(rate >= a.min_rate, f"update rate measured in the page {rate}/s >= {a.min_rate}/s (latency ms: {state['latency']})")
+        m = re.match(r"([\d.]+) \(([\d.]+)\)", state["latency"])
+        median = float(m.group(1)) if m else float("inf")
+        check(median < 100, f"median latency from the display's receipt to the paint {median} ms < 100 ms (p95 {m.group(2) if m else '-'})")
         for comp in filter(None, a.components.split(",")):
             check(any(r.startswith(comp + "|") for r in state["rows"]), f"status row of {comp} ({state['rows']})")
         for expected in filter(None, a.stations.split(";")):
