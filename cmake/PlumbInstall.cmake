@@ -13,7 +13,8 @@
 #   common  libraries, the `plumb` CLI, IDL, configuration, docs (both computers)
 #   cyclonedds, fastdds  one transport plugin each (their package depends on the vendor library)
 #   tool    plumb-bridge, plumb-sim (the tool computer, next to the sensors)
-#   surface plumb-estimator, plumb-calibrate, plumb-survey, the estimator plugins (the surface computer)
+#   surface plumb-estimator, plumb-calibrate, plumb-survey, plumb-display (its page is built into the
+#           executable: no web files to install), the estimator plugins (the surface computer)
 #   dev     headers, CMake package, example sources and programs (other teams)
 include(CMakePackageConfigHelpers)
 
@@ -42,6 +43,10 @@ foreach(plugin ${plumb_estimator_plugins})
 endforeach()
 install(TARGETS plumb_calibration LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT surface)
 install(TARGETS plumb-estimator plumb-calibrate plumb-survey RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT surface)
+# The live display, built only where civetweb is installed (components/plumb-display/CMakeLists.txt).
+if(TARGET plumb-display)
+  install(TARGETS plumb-display RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT surface)
+endif()
 
 # Data both computers use: the topic definitions, configuration for stock DDS applications, docs.
 file(GLOB plumb_idl_install ${PROJECT_SOURCE_DIR}/idl/*.idl)

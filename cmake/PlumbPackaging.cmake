@@ -5,7 +5,8 @@
 #   plumb-transport-cyclonedds  Cyclone DDS transport plugin   (depends on libddsc0debian)
 #   plumb-transport-fastdds     Fast DDS transport plugin      (depends on libfastrtps2.9, libfastcdr1)
 #   plumb-tool                  tool computer: plumb-bridge, plumb-sim
-#   plumb-surface               surface computer: plumb-estimator, plumb-calibrate, estimator plugins
+#   plumb-surface               surface computer: plumb-estimator, plumb-calibrate, plumb-survey,
+#                               plumb-display (depends on libcivetweb1), estimator plugins
 #   plumb-dev                   headers, CMake package, examples
 #
 # The vendor dependencies come from dpkg-shlibdeps (what the binaries really link), plumb's own
@@ -53,7 +54,7 @@ set(CPACK_DEBIAN_TOOL_PACKAGE_DEPENDS "plumb-common ${plumb_exact}, ${plumb_any_
 set(CPACK_COMPONENT_TOOL_DESCRIPTION "plumb for the tool computer: hardware bridge (plumb-bridge) and simulated platform (plumb-sim)")
 set(CPACK_DEBIAN_SURFACE_PACKAGE_NAME plumb-surface)
 set(CPACK_DEBIAN_SURFACE_PACKAGE_DEPENDS "plumb-common ${plumb_exact}, ${plumb_any_transport}")
-set(CPACK_COMPONENT_SURFACE_DESCRIPTION "plumb for the surface computer: estimator host, estimator plugins, calibration")
+set(CPACK_COMPONENT_SURFACE_DESCRIPTION "plumb for the surface computer: estimator host, estimator plugins, calibration, survey, live display")
 set(CPACK_DEBIAN_DEV_PACKAGE_NAME plumb-dev)
 set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS "plumb-common ${plumb_exact}, libeigen3-dev")
 set(CPACK_COMPONENT_DEV_DESCRIPTION "plumb headers and CMake package (find_package(plumb)), examples")

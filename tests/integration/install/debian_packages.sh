@@ -35,6 +35,7 @@ contains() {  # contains PACKAGE PATH...: every PATH is in the package
 contains plumb-tool bin/plumb-bridge bin/plumb-sim
 contains plumb-surface bin/plumb-estimator bin/plumb-calibrate lib/libplumb_estimator_compensated.so \
   lib/libplumb_estimator_strapdown.so
+if [ -x "$build/bin/plumb-display" ]; then contains plumb-surface bin/plumb-display; fi  # built where civetweb is
 contains plumb-common bin/plumb lib/libplumb_plugin.so lib/libplumb_transport.so share/plumb/idl/attitude.idl \
   share/plumb/config/fastdds-loopback.xml share/plumb/config/cyclonedds-loopback.xml share/doc/plumb/README.md
 contains plumb-transport-cyclonedds lib/libplumb_transport_cyclonedds.so

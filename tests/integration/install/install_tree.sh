@@ -58,6 +58,26 @@ expect_error "broken configuration file" "broken\.xml:$line: not well-formed XML
 expect_error "plumb status with nobody on the domain" "no plumb component seen.*domain $PLUMB_DOMAIN_ID.*same --domain" \
   run plumb status --wait 2 --transport "$host_t"
 
+# The live display (built where civetweb is): its page is inside the executable, so the installed
+# program serves it with nothing else from the build tree.
+if [ -x "$build/bin/plumb-display" ]; then
+  if [ -x "$prefix/bin/plumb-display" ]; then
+    # env itself, not the function run(): $! must be the program's pid (env execs it) to stop it below.
+    env -u LD_LIBRARY_PATH -u PLUMB_TRANSPORT_PATH -u PLUMB_ESTIMATOR_PATH PATH="$prefix/bin:/usr/bin:/bin" \
+      plumb-display --transport "$host_t" --port 0 --duration 20 > "$work/display.log" 2>&1 &
+    display=$!
+    pids+=($display)
+    for ((i = 0; i < 100; ++i)); do grep -q "serving http" "$work/display.log" && break; sleep 0.1; done
+    port=$(sed -nE 's|.*serving http://127\.0\.0\.1:([0-9]+)/.*|\1|p' "$work/display.log")
+    output_matches "plumb live" python3 -c "import urllib.request; print(urllib.request.urlopen('http://127.0.0.1:${port:-1}/').read().decode())" &&
+      pass "the installed plumb-display serves its page" || fail "installed plumb-display: $(cat "$work/display.log")"
+    kill "$display"  # it publishes plumb/status: the checks below want the domain to themselves
+    wait "$display" 2>/dev/null
+  else
+    fail "installed tree lacks bin/plumb-display"
+  fi
+fi
+
 run plumb topic echo plumb/attitude/compensated --csv --count 1 --timeout 60 --transport "$host_t" \
   > "$work/att.csv" 2> "$work/echo.err" &
 echo_pid=$!; pids+=($echo_pid)

@@ -1,0 +1,126 @@
+#include "dds_feed.hpp"
+
+#include <chrono>
+
+#include "json.hpp"
+#include "plumb/transport/topic_names.hpp"
+
+namespace plumb::display_component {
+namespace {
+
+double now_ms() {
+  return static_cast<double>(
+             std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+                 .count()) *
+         1e-3;
+}
+
+// Messages per batched take.
+constexpr std::size_t kTakeBatch = 64;
+
+bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+
+}  // namespace
+
+struct DdsFeed::Stream {
+  virtual ~Stream() = default;
+  virtual std::size_t drain(Hub& hub) = 0;
+};
+
+namespace {
+
+template <class M> class TypedStream final : public DdsFeed::Stream {
+ public:
+  explicit TypedStream(transport::Reader<M> reader) : reader_(std::move(reader)) {}
+
+  std::size_t drain(Hub& hub) override {
+    std::size_t n = 0;
+    while (reader_.take(taken_, kTakeBatch) > 0) {
+      const double rx = now_ms();
+      for (const M& m : taken_) deliver(hub, m, rx);
+      n += taken_.size();
+    }
+    return n;
+  }
+
+ private:
+  static void deliver(Hub& hub, const topics::Attitude& a, double rx) {
+    const std::string key = a.tool_id + "/" + a.estimator;
+    HistoryPoint p;
+    p.rx_ms = rx;
+    p.inclination = a.inclination_deg;
+    p.azimuth = a.azimuth_deg;
+    p.toolface = a.gravity_toolface_deg;
+    p.rpm = a.rpm;
+    p.flags = a.flags;
+    hub.attitude(key, attitude_json(a, key, rx), p);
+  }
+  static void deliver(Hub& hub, const topics::ComponentStatus& s, double rx) {
+    const std::string key = s.component + "@" + s.host;
+    hub.status(key, status_json(s, key, rx));
+  }
+  static void deliver(Hub& hub, const topics::SurveyStation& s, double) {
+    const std::string key = s.tool_id + "#" + std::to_string(s.index);
+    hub.station(key, station_json(s, key));
+  }
+
+  transport::Reader<M> reader_;
+  std::vector<M> taken_;
+};
+
+}  // namespace
+
+DdsFeed::DdsFeed(transport::Participant& participant, Hub& hub) : participant_(participant), hub_(hub) {
+  const std::string status = transport::topic_names::kStatus;
+  streams_.push_back(std::make_unique<TypedStream<topics::ComponentStatus>>(transport::make_reader<topics::ComponentStatus>(
+      participant_, status, transport::default_qos_for_topic(status), [this] { wake(); })));
+  topics_.insert(status);
+}
+
+DdsFeed::~DdsFeed() = default;
+
+void DdsFeed::wake() {
+  {
+    std::lock_guard lock(mutex_);
+    pending_ = true;
+  }
+  cv_.notify_one();
+}
+
+void DdsFeed::discover() {
+  const auto attitude_type = topics::type_support<topics::Attitude>().type_name;
+  const auto survey_type = topics::type_support<topics::SurveyStation>().type_name;
+  auto wake = [this] { this->wake(); };
+  for (const auto& t : participant_.discovered_topics()) {
+    if (t.writers == 0 || topics_.count(t.name)) continue;
+    const auto qos = transport::default_qos_for_topic(t.name);
+    if (starts_with(t.name, transport::topic_names::kAttitudePrefix) && t.type_name == attitude_type) {
+      streams_.push_back(std::make_unique<TypedStream<topics::Attitude>>(
+          transport::make_reader<topics::Attitude>(participant_, t.name, qos, wake)));
+    } else if (starts_with(t.name, transport::topic_names::kSurveyPrefix) && t.type_name == survey_type) {
+      streams_.push_back(std::make_unique<TypedStream<topics::SurveyStation>>(
+          transport::make_reader<topics::SurveyStation>(participant_, t.name, qos, wake)));
+    } else {
+      continue;
+    }
+    topics_.insert(t.name);
+  }
+}
+
+std::size_t DdsFeed::poll(std::chrono::milliseconds timeout) {
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_discovery_ >= std::chrono::milliseconds(500)) {
+    last_discovery_ = now;
+    discover();
+  }
+  {
+    std::unique_lock lock(mutex_);
+    cv_.wait_for(lock, timeout, [this] { return pending_; });
+    pending_ = false;
+  }
+  std::size_t n = 0;
+  for (auto& s : streams_) n += s->drain(hub_);
+  return n;
+}
+
+}  // namespace plumb::display_component

@@ -1,0 +1,201 @@
+#include "hub.hpp"
+
+#include <algorithm>
+
+#include "json.hpp"
+
+namespace plumb::display_component {
+namespace {
+
+double now_ms() {
+  return static_cast<double>(
+             std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+                 .count()) *
+         1e-3;
+}
+
+void append_list(std::string& out, const char* name, std::size_t count, const auto& each) {
+  out += ",\"";
+  out += name;
+  out += "\":[";
+  for (std::size_t i = 0; i < count; ++i) {
+    if (i) out += ',';
+    out += each(i);
+  }
+  out += ']';
+}
+
+}  // namespace
+
+std::optional<std::string> Outbox::next() {
+  std::unique_lock lock(mutex_);
+  const auto heartbeat_at = std::max(last_sent_ + options_.heartbeat, std::chrono::steady_clock::now());
+  // Something due and the throttle open, or nothing for a heartbeat period.
+  while (!closed_) {
+    const auto now = std::chrono::steady_clock::now();
+    const auto open_at = last_sent_ + options_.min_gap;
+    if (pending() && now >= open_at) break;
+    if (now >= heartbeat_at) break;
+    cv_.wait_until(lock, pending() ? std::min(open_at, heartbeat_at) : heartbeat_at);
+  }
+  if (closed_) return std::nullopt;
+  last_sent_ = std::chrono::steady_clock::now();
+  ++frames_;
+  if (hello_) {
+    std::string frame = *hello_;
+    hello_.reset();
+    return frame;
+  }
+  std::string frame = "{\"type\":\"update\",\"sent\":";
+  append_json_number(frame, now_ms(), 1);
+  frame += ",\"drops\":" + std::to_string(dropped_);
+  std::vector<Text> attitudes;
+  for (auto& [key, queue] : attitudes_) attitudes.insert(attitudes.end(), queue.begin(), queue.end());
+  append_list(frame, "att", attitudes.size(), [&](std::size_t i) -> const std::string& { return *attitudes[i]; });
+  std::vector<Text> statuses;
+  for (auto& [key, text] : statuses_) statuses.push_back(text);
+  append_list(frame, "status", statuses.size(), [&](std::size_t i) -> const std::string& { return *statuses[i]; });
+  append_list(frame, "survey", stations_.size(), [&](std::size_t i) -> const std::string& { return *stations_[i]; });
+  frame += '}';
+  attitudes_.clear();
+  statuses_.clear();
+  stations_.clear();
+  return frame;
+}
+
+void Outbox::close() {
+  {
+    std::lock_guard lock(mutex_);
+    closed_ = true;
+  }
+  cv_.notify_all();
+}
+
+std::uint64_t Outbox::dropped() const {
+  std::lock_guard lock(mutex_);
+  return dropped_;
+}
+
+Hub::Hub(HubOptions options) : options_(std::move(options)) {}
+
+void Hub::attitude(const std::string& key, const std::string& json, const HistoryPoint& point) {
+  auto text = std::make_shared<const std::string>(json);
+  std::lock_guard lock(mutex_);
+  ++stats_.attitudes;
+  latest_attitude_[key] = text;
+  auto& history = history_[key];
+  if (history.empty() || point.rx_ms - history.back().rx_ms >= options_.history_step_s * 1e3) history.push_back(point);
+  while (!history.empty() && point.rx_ms - history.front().rx_ms > options_.history_s * 1e3) history.pop_front();
+  for (const auto& box : outboxes_) {
+    {
+      std::lock_guard box_lock(box->mutex_);
+      auto& queue = box->attitudes_[key];
+      queue.push_back(text);
+      while (queue.size() > options_.backlog) {
+        queue.pop_front();
+        ++box->dropped_;
+      }
+    }
+    box->cv_.notify_one();
+  }
+}
+
+void Hub::status(const std::string& key, const std::string& json) {
+  auto text = std::make_shared<const std::string>(json);
+  std::lock_guard lock(mutex_);
+  ++stats_.statuses;
+  latest_status_[key] = text;
+  for (const auto& box : outboxes_) {
+    {
+      std::lock_guard box_lock(box->mutex_);
+      box->statuses_[key] = text;
+    }
+    box->cv_.notify_one();
+  }
+}
+
+void Hub::station(const std::string& key, const std::string& json) {
+  auto text = std::make_shared<const std::string>(json);
+  std::lock_guard lock(mutex_);
+  ++stats_.stations;
+  if (stations_.emplace(key, text).second) {
+    station_order_.push_back(key);
+  } else {
+    stations_[key] = text;
+  }
+  while (station_order_.size() > options_.max_stations) {
+    stations_.erase(station_order_.front());
+    station_order_.pop_front();
+  }
+  for (const auto& box : outboxes_) {
+    {
+      std::lock_guard box_lock(box->mutex_);
+      box->stations_.push_back(text);
+      while (box->stations_.size() > options_.max_stations) {
+        box->stations_.pop_front();
+        ++box->dropped_;
+      }
+    }
+    box->cv_.notify_one();
+  }
+}
+
+std::string Hub::hello_json() const {
+  std::string out = "{\"type\":\"hello\",\"sent\":";
+  append_json_number(out, now_ms(), 1);
+  out += ",\"history_s\":";
+  append_json_number(out, options_.history_s, 0);
+  out += ",\"history\":{";
+  bool first = true;
+  for (const auto& [key, points] : history_) {
+    if (!first) out += ',';
+    first = false;
+    append_json_string(out, key);
+    out += ":[";
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const auto& p = points[i];
+      if (i) out += ',';
+      out += '[';
+      append_json_number(out, p.rx_ms, 0);
+      for (const double v : {p.inclination, p.azimuth, p.toolface, p.rpm}) {
+        out += ',';
+        append_json_number(out, v, 3);
+      }
+      out += ',' + std::to_string(p.flags) + ']';
+    }
+    out += ']';
+  }
+  return out + "}}";
+}
+
+std::shared_ptr<Outbox> Hub::join() {
+  auto box = std::shared_ptr<Outbox>(new Outbox(options_));
+  std::lock_guard lock(mutex_);
+  box->hello_ = std::make_shared<const std::string>(hello_json());
+  for (const auto& [key, text] : latest_attitude_) box->attitudes_[key].push_back(text);
+  box->statuses_ = latest_status_;
+  for (const auto& key : station_order_) box->stations_.push_back(stations_.at(key));
+  outboxes_.push_back(box);
+  ++stats_.browsers_total;
+  return box;
+}
+
+void Hub::leave(const std::shared_ptr<Outbox>& outbox) {
+  outbox->close();
+  std::lock_guard lock(mutex_);
+  const auto it = std::find(outboxes_.begin(), outboxes_.end(), outbox);
+  if (it == outboxes_.end()) return;
+  dropped_by_gone_ += outbox->dropped();
+  outboxes_.erase(it);
+}
+
+HubStats Hub::stats() const {
+  std::lock_guard lock(mutex_);
+  HubStats s = stats_;
+  s.browsers = outboxes_.size();
+  s.dropped = dropped_by_gone_;
+  for (const auto& box : outboxes_) s.dropped += box->dropped();
+  return s;
+}
+
+}  // namespace plumb::display_component

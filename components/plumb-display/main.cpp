@@ -1,0 +1,93 @@
+// plumb-display: the live display in a browser. Joins the DDS domain, reads every estimator's
+// attitude (plumb/attitude/<estimator>), the survey stations (plumb/survey/<tool>) and every
+// component's status (plumb/status), and serves a page that shows them live: dials, numbers with
+// their sigma, history charts, rotation speed, stations, status and counters. docs/display.md.
+#include <chrono>
+#include <iostream>
+
+#include "dds_feed.hpp"
+#include "hub.hpp"
+#include "plumb/components/cli.hpp"
+#include "plumb/components/status_reporter.hpp"
+#include "web_server.hpp"
+
+namespace plumb::display_component {
+namespace {
+
+struct Options {
+  components::TransportOptions transport;
+  WebOptions web;
+  double max_rate = 30;   // frames per second and browser
+  double history_s = 600;
+  double duration_s = 0;  // 0: until Ctrl-C
+};
+
+int run(const Options& o) {
+  if (o.max_rate <= 0) throw std::invalid_argument("--max-rate must be > 0 frames per second");
+  if (o.history_s < 0) throw std::invalid_argument("--history must be >= 0 seconds");
+  HubOptions hub_options;
+  hub_options.min_gap = std::chrono::milliseconds(static_cast<long>(1000.0 / o.max_rate));
+  hub_options.history_s = o.history_s;
+  Hub hub(hub_options);
+  auto conn = components::connect(o.transport, "plumb-display");
+  DdsFeed feed(*conn.participant, hub);
+  // The server starts after DDS: a port that is taken ends the program before anyone connects to it.
+  WebServer server(o.web, hub);
+  components::install_stop_handler();
+  components::StatusReporter status(*conn.participant, "plumb-display");
+  std::cout << "plumb-display: serving http://" << o.web.bind << ":" << server.port() << "/ (domain "
+            << conn.options.domain_id << ", " << conn.transport->name()
+            << (o.web.bind == "127.0.0.1" ? "; this computer only: --bind 0.0.0.0 to serve the network" : "") << ")"
+            << std::endl;
+  const auto t0 = std::chrono::steady_clock::now();
+  while (!components::g_stop) {
+    if (o.duration_s > 0 && std::chrono::steady_clock::now() - t0 >= std::chrono::duration<double>(o.duration_s)) break;
+    feed.poll(std::chrono::milliseconds(50));
+    if (status.due()) {
+      const HubStats s = hub.stats();
+      status.publish("running", {{"browsers", s.browsers},
+                                 {"browsers_total", s.browsers_total},
+                                 {"attitudes", s.attitudes},
+                                 {"statuses", s.statuses},
+                                 {"stations", s.stations},
+                                 {"topics", feed.topics()},
+                                 {"frames_sent", server.frames_sent()},
+                                 {"dropped", s.dropped}});
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace plumb::display_component
+
+int main(int argc, char** argv) {
+  using namespace plumb;
+  display_component::Options o;
+  CLI::App app{"plumb-display: the live display in a web browser: every estimator's inclination, azimuth and toolface "
+               "(dials, numbers with sigma, history), rotation speed, survey stations, and every component's status"};
+  app.name("plumb-display");
+  components::add_transport_options(app, o.transport);
+  app.add_option("--port", o.web.port, "TCP port of the page (0: any free port, printed at start)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 65535));
+  app.add_option("--bind", o.web.bind,
+                 "address to listen on: 127.0.0.1 serves this computer only; 0.0.0.0 exposes the page to every "
+                 "network the computer is on (no password, no encryption: see docs/display.md)")
+      ->capture_default_str();
+  app.add_option("--max-rate", o.max_rate, "at most this many updates a second to each browser")->capture_default_str();
+  app.add_option("--history", o.history_s, "seconds of history a browser gets when it opens the page")->capture_default_str();
+  app.add_option("--max-browsers", o.web.max_browsers, "browsers served at once (each holds a server thread); more are refused and their pages retry")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  app.add_option("--web-root", o.web.web_root, "serve the page from this folder instead of the copy built in (to edit it)")
+      ->check(CLI::ExistingDirectory);
+  app.add_option("--duration", o.duration_s, "stop after this many seconds (0: until Ctrl-C)")->capture_default_str();
+  app.footer("Open http://<computer>:<port>/ in any browser (phone, rig-floor screen); the page reconnects by itself.");
+  if (const int status = components::parse_command_line(app, argc, argv); status >= 0) return status;
+  try {
+    return display_component::run(o);
+  } catch (const std::exception& e) {
+    return components::exit_on_error("plumb-display", e);
+  }
+}

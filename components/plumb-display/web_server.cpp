@@ -1,0 +1,196 @@
+#include "web_server.hpp"
+
+#include <arpa/inet.h>
+#include <civetweb.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "web_assets.hpp"
+
+namespace plumb::display_component {
+
+struct WebServer::Browser {
+  std::shared_ptr<Outbox> outbox;
+  std::thread sender;
+};
+
+namespace {
+
+std::string mime_type(const std::string& path) {
+  const auto dot = path.rfind('.');
+  const std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
+  if (ext == "html") return "text/html; charset=utf-8";
+  if (ext == "js") return "text/javascript; charset=utf-8";
+  if (ext == "css") return "text/css; charset=utf-8";
+  if (ext == "svg") return "image/svg+xml";
+  if (ext == "json") return "application/json";
+  return "application/octet-stream";
+}
+
+// A file name of the page (no folders, no dot files): all --web-root may serve.
+bool plain_name(const std::string& name) {
+  return !name.empty() && name[0] != '.' && name.find('/') == std::string::npos && name.find('\\') == std::string::npos;
+}
+
+int send_body(mg_connection* conn, const std::string& type, std::string_view body) {
+  mg_send_http_ok(conn, type.c_str(), static_cast<long long>(body.size()));
+  mg_write(conn, body.data(), body.size());
+  return 200;
+}
+
+// Why civetweb could not listen: it only says "Failed to setup server ports" (its log line, with
+// the reason, goes to the log callback in a format of its own), so the address is tried once more
+// here for the system's own words.
+std::string listen_failure(const std::string& address, int port) {
+  in_addr ip{};
+  if (::inet_pton(AF_INET, address.c_str(), &ip) != 1) return "'" + address + "' is not an IPv4 address (see --bind)";
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  if (fd < 0) return std::strerror(errno);
+  const int on = 1;
+  ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);  // as civetweb does
+  sockaddr_in sa{};
+  sa.sin_family = AF_INET;
+  sa.sin_port = htons(static_cast<std::uint16_t>(port));
+  sa.sin_addr = ip;
+  std::string why;
+  if (::bind(fd, reinterpret_cast<const sockaddr*>(&sa), sizeof sa) != 0) {
+    const int e = errno;
+    why = std::strerror(e);
+    if (e == EADDRINUSE) why += " (another program serves this port: choose another --port)";
+    if (e == EADDRNOTAVAIL) why += " (not an address of this computer: see --bind)";
+    if (e == EACCES) why += " (ports below 1024 need root: choose another --port)";
+  }
+  ::close(fd);
+  return why;
+}
+
+int serve_trampoline(mg_connection* conn, void* self) { return static_cast<WebServer*>(self)->serve(conn); }
+int connect_trampoline(const mg_connection*, void* self) { return static_cast<WebServer*>(self)->browser_may_connect() ? 0 : 1; }
+void ready_trampoline(mg_connection* conn, void* self) { static_cast<WebServer*>(self)->browser_ready(conn); }
+// The page sends nothing the server needs (it may send keep-alive text); 1 keeps the connection open.
+int data_trampoline(mg_connection*, int, char*, size_t, void*) { return 1; }
+void close_trampoline(const mg_connection* conn, void* self) { static_cast<WebServer*>(self)->browser_closed(conn); }
+// civetweb's own log lines (a browser that vanished mid-request, ...) would interleave with ours on
+// stderr: the counters of /stats.json and plumb/status say what matters.
+int quiet_log(const mg_connection*, const char*) { return 1; }
+
+}  // namespace
+
+WebServer::WebServer(const WebOptions& options, Hub& hub) : options_(options), hub_(hub) {
+  mg_init_library(0);
+  const std::string ports = options_.bind + ":" + std::to_string(options_.port);
+  const std::string threads = std::to_string(options_.max_browsers + 8);  // + page and stats requests
+  const char* config[] = {"listening_ports", ports.c_str(),
+                          "num_threads", threads.c_str(),
+                          // A page that stops answering is found by pings when it sends nothing for 5 s.
+                          "enable_websocket_ping_pong", "yes",
+                          "websocket_timeout_ms", "5000",
+                          "request_timeout_ms", "10000",
+                          nullptr};
+  mg_callbacks callbacks{};
+  callbacks.log_message = quiet_log;
+  mg_init_data init{};
+  init.callbacks = &callbacks;
+  init.user_data = this;
+  init.configuration_options = config;
+  char text[256] = {};
+  unsigned code = 0;
+  mg_error_data error{};
+  error.code = &code;
+  error.text = text;
+  error.text_buffer_size = sizeof text;
+  context_ = mg_start2(&init, &error);
+  if (!context_) {
+    std::string why = listen_failure(options_.bind, options_.port);
+    if (why.empty()) why = text[0] ? text : "civetweb could not start";
+    throw std::runtime_error("cannot serve on " + ports + ": " + why);
+  }
+  mg_server_port served[4]{};
+  if (mg_get_server_ports(context_, 4, served) > 0) port_ = served[0].port;
+  mg_set_request_handler(context_, "/", serve_trampoline, this);
+  mg_set_websocket_handler(context_, "/ws", connect_trampoline, ready_trampoline, data_trampoline, close_trampoline, this);
+}
+
+WebServer::~WebServer() {
+  // mg_stop closes every connection: each close handler stops its sender thread.
+  if (context_) mg_stop(context_);
+  mg_exit_library();
+}
+
+int WebServer::serve(mg_connection* conn) {
+  const mg_request_info* request = mg_get_request_info(conn);
+  std::string path = request->local_uri ? request->local_uri : "/";
+  if (path == "/") path = "/index.html";
+  const std::string name = path.substr(1);
+  if (name == "stats.json") return send_body(conn, mime_type(name), stats_json());
+  if (!plain_name(name)) {
+    mg_send_http_error(conn, 404, "%s", "not found");
+    return 404;
+  }
+  if (!options_.web_root.empty()) {
+    std::ifstream in(options_.web_root + "/" + name, std::ios::binary);
+    if (in) {
+      std::ostringstream body;
+      body << in.rdbuf();
+      return send_body(conn, mime_type(name), body.str());
+    }
+  } else if (const auto* asset = web_asset(name)) {
+    return send_body(conn, mime_type(name), *asset);
+  }
+  mg_send_http_error(conn, 404, "%s", "not found");
+  return 404;
+}
+
+bool WebServer::browser_may_connect() {
+  // Beyond --max-browsers a WebSocket is refused (the page retries, up to every 5 s): the worker
+  // threads left are kept for page and stats requests.
+  if (hub_.stats().browsers < static_cast<std::size_t>(options_.max_browsers)) return true;
+  ++refused_;
+  return false;
+}
+
+void WebServer::browser_ready(mg_connection* conn) {
+  auto* browser = new Browser;
+  browser->outbox = hub_.join();
+  mg_set_user_connection_data(conn, browser);
+  browser->sender = std::thread([this, conn, outbox = browser->outbox] {
+    // Only this thread writes frames to the browser, so a slow one blocks nothing but itself: its
+    // outbox meanwhile keeps the latest estimates and counts what it drops.
+    while (auto frame = outbox->next()) {
+      if (mg_websocket_write(conn, MG_WEBSOCKET_OPCODE_TEXT, frame->data(), frame->size()) <= 0) {
+        ++write_failures_;
+        break;  // the connection is going: its close handler ends this browser
+      }
+      ++frames_sent_;
+    }
+  });
+}
+
+void WebServer::browser_closed(const mg_connection* conn) {
+  auto* browser = static_cast<Browser*>(mg_get_user_connection_data(conn));
+  if (!browser) return;
+  hub_.leave(browser->outbox);  // wakes the sender, which then ends
+  if (browser->sender.joinable()) browser->sender.join();
+  delete browser;
+}
+
+std::string WebServer::stats_json() const {
+  const HubStats s = hub_.stats();
+  std::ostringstream out;
+  out << "{\"browsers\":" << s.browsers << ",\"browsers_total\":" << s.browsers_total << ",\"attitudes\":" << s.attitudes
+      << ",\"statuses\":" << s.statuses << ",\"stations\":" << s.stations << ",\"dropped\":" << s.dropped
+      << ",\"frames_sent\":" << frames_sent_ << ",\"write_failures\":" << write_failures_ << ",\"refused\":" << refused_
+      << "}";
+  return out.str();
+}
+
+}  // namespace plumb::display_component
