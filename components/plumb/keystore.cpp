@@ -235,7 +235,7 @@ void create_permissions(const std::string& dir_text, const std::string& name, co
 std::optional<Grant> default_grant(const std::string& name) {
   // What each component creates (its writers and readers), plumb/status for every one.
   static const std::map<std::string, Grant> grants{
-      {"plumb-sim", {{"plumb/sensor/*", "plumb/sim/truth", "plumb/depth", "plumb/status"}, {"plumb/calibration"}}},
+      {"plumb-sim", {{"plumb/sensor/*", "plumb/sim/truth", "plumb/depth", "plumb/status"}, {}}},
       {"plumb-bridge", {{"plumb/sensor/*", "plumb/status"}, {"plumb/sensor/*", "plumb/calibration"}}},
       {"plumb-estimator",
        {{"plumb/attitude/*", "plumb/navigation/*", "plumb/status"},
