@@ -227,7 +227,9 @@ SecurityFiles check_security_files(const std::string& dir_in) {
   check_signed_by(cert, f.certificate, identity_ca, f.identity_ca);
 
   Bio key_bio = open_file(f.private_key);
-  Key key(PEM_read_bio_PrivateKey(key_bio.get(), nullptr, nullptr, nullptr));
+  // No passphrase: without this callback OpenSSL would ask for one on the terminal and block.
+  pem_password_cb* no_passphrase = [](char*, int, int, void*) { return 0; };
+  Key key(PEM_read_bio_PrivateKey(key_bio.get(), nullptr, no_passphrase, nullptr));
   if (!key) refuse(f.private_key, "is not a PEM private key (or is encrypted)" + openssl_reason());
   if (X509_check_private_key(cert.get(), key.get()) != 1) refuse(f.private_key, "does not belong to " + f.certificate);
 

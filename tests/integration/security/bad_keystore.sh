@@ -65,6 +65,11 @@ dir=$(new no-key)
 rm "$dir/key.pem"
 refused "missing private key" "security: .*/no-key/key.pem: private key is missing" "$dir"
 
+dir=$(new locked-key)
+openssl pkey -in "$dir/key.pem" -aes256 -passout pass:secret -out "$dir/key.enc" && mv "$dir/key.enc" "$dir/key.pem" &&
+  chmod 600 "$dir/key.pem" || fail "encrypting a key"
+refused "key with a passphrase (nobody to type it)" "security: .*/locked-key/key.pem: is not a PEM private key \(or is encrypted\)" "$dir"
+
 # An identity of another CA dropped into this keystore's folder (its certificate and key).
 dir=$(new foreign)
 cp "$work/other/enclaves/plumb-sim/cert.pem" "$work/other/enclaves/plumb-sim/key.pem" "$dir/"

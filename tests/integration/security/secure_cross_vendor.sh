@@ -30,17 +30,17 @@ export PLUMB_DOMAIN_ID=$domain
 ks=$work/ks
 "$bin/plumb" security create-keystore "$ks" --domains 10-19 > /dev/null || { fail "create-keystore"; finish; }
 for n in plumb-sim plumb-estimator plumb-monitor; do "$bin/plumb" security create-identity "$ks" $n > /dev/null || fail "identity $n"; done
-id() { echo "$ks/enclaves/$1"; }
+ident() { echo "$ks/enclaves/$1"; }
 known="Begin handshake reply failed: Failed to convert octet sequence to ASN1 integer"
 # sensor_rows FILE: CSV rows of a sensor echo with |f| = g (the simulated 9.80665 m/s^2).
 good_rows() { awk -F, 'NR > 1 { n = sqrt($3^2 + $4^2 + $5^2); if (n > 9.7 && n < 9.9) ok++ } END { print ok + 0 }' "$1"; }
 
 # 1. Cyclone writer, Fast DDS reader.
 PLUMB_TRANSPORT=fastdds ip netns exec "$surface" timeout 40 "$bin/plumb" topic echo plumb/sensor/raw --csv --count 5 \
-  --timeout 15 --interface "$surface_if" --security "$(id plumb-monitor)" > "$work/c2f.csv" 2> "$work/c2f.err" &
+  --timeout 15 --interface "$surface_if" --security "$(ident plumb-monitor)" > "$work/c2f.csv" 2> "$work/c2f.err" &
 echo_pid=$!; pids+=($echo_pid)
 sleep 1
-PLUMB_TRANSPORT=cyclonedds ip netns exec "$tool" timeout 40 "$bin/plumb-sim" --interface "$tool_if" --security "$(id plumb-sim)" \
+PLUMB_TRANSPORT=cyclonedds ip netns exec "$tool" timeout 40 "$bin/plumb-sim" --interface "$tool_if" --security "$(ident plumb-sim)" \
   --inclination 1 --azimuth 45 --rpm 60 --duration 6 --rate x1 --wait-subscribers 8 > "$work/c2f_sim.log" 2>&1
 wait $echo_pid; rc=$?
 if [ $rc -eq 0 ]; then
@@ -53,14 +53,14 @@ fi
 
 # 2. Fast DDS writer, Cyclone readers.
 PLUMB_TRANSPORT=cyclonedds ip netns exec "$surface" timeout 40 "$bin/plumb" topic echo plumb/sensor/raw --csv --count 5 \
-  --timeout 15 --interface "$surface_if" --security "$(id plumb-monitor)" > "$work/f2c.csv" 2> "$work/f2c.err" &
+  --timeout 15 --interface "$surface_if" --security "$(ident plumb-monitor)" > "$work/f2c.csv" 2> "$work/f2c.err" &
 echo_pid=$!; pids+=($echo_pid)
 PLUMB_TRANSPORT=cyclonedds ip netns exec "$surface" timeout 40 "$bin/plumb-estimator" --interface "$surface_if" \
-  --security "$(id plumb-estimator)" --plugin compensated --input plumb/sensor/raw --window 1 --count 2 --timeout 15 \
+  --security "$(ident plumb-estimator)" --plugin compensated --input plumb/sensor/raw --window 1 --count 2 --timeout 15 \
   > "$work/f2c_est.log" 2>&1 &
 est_pid=$!; pids+=($est_pid)
 sleep 1
-PLUMB_TRANSPORT=fastdds ip netns exec "$tool" timeout 40 "$bin/plumb-sim" --interface "$tool_if" --security "$(id plumb-sim)" \
+PLUMB_TRANSPORT=fastdds ip netns exec "$tool" timeout 40 "$bin/plumb-sim" --interface "$tool_if" --security "$(ident plumb-sim)" \
   --inclination 1 --azimuth 45 --rpm 60 --duration 6 --rate x1 --wait-subscribers 8 > "$work/f2c_sim.log" 2>&1
 wait $echo_pid; echo_rc=$?
 wait $est_pid; est_rc=$?

@@ -42,7 +42,7 @@ for n in plumb-sim plumb-estimator plumb-monitor plumb-calibrate plumb-survey; d
   "$bin/plumb" security create-identity "$ks" $n > /dev/null || fail "create-identity $n"
 done
 for n in plumb-monitor plumb-estimator; do "$bin/plumb" security create-identity "$other" $n > /dev/null || fail "other $n"; done
-id() { echo "$ks/enclaves/$1"; }
+ident() { echo "$ks/enclaves/$1"; }
 
 # 1. Plain run: proves that the capture check sees plaintext when there is plaintext.
 capture_start "$work/plain.pcap"
@@ -67,16 +67,16 @@ fi
 # 2. Secured run.
 capture_start "$work/secure.pcap"
 t0=$(date +%s)
-on surface timeout 60 "$bin/plumb-estimator" --security "$(id plumb-estimator)" --plugin compensated --input plumb/sensor/raw \
+on surface timeout 60 "$bin/plumb-estimator" --security "$(ident plumb-estimator)" --plugin compensated --input plumb/sensor/raw \
   --reliable --window 2 --count 4 --timeout 50 -q > "$work/host.log" 2>&1 &
 host_pid=$!; pids+=($host_pid)
-on surface timeout 60 "$bin/plumb" topic echo plumb/attitude/compensated --security "$(id plumb-monitor)" --csv --timeout 40 \
+on surface timeout 60 "$bin/plumb" topic echo plumb/attitude/compensated --security "$(ident plumb-monitor)" --csv --timeout 40 \
   > "$work/att.csv" 2> "$work/att.err" &
 att_pid=$!; pids+=($att_pid)
-on surface timeout 60 "$bin/plumb" topic echo plumb/sensor/raw --security "$(id plumb-monitor)" --csv --count 1 --timeout 40 \
+on surface timeout 60 "$bin/plumb" topic echo plumb/sensor/raw --security "$(ident plumb-monitor)" --csv --count 1 --timeout 40 \
   > "$work/raw.csv" 2> "$work/raw.err" &
 raw_pid=$!; pids+=($raw_pid)
-on surface timeout 60 "$bin/plumb" topic echo plumb/status --security "$(id plumb-monitor)" --count 3 --timeout 40 \
+on surface timeout 60 "$bin/plumb" topic echo plumb/status --security "$(ident plumb-monitor)" --count 3 --timeout 40 \
   > "$work/status.txt" 2>&1 &
 status_pid=$!; pids+=($status_pid)
 # Intruders reading the sensor stream: plain, another CA, an identity not allowed to subscribe it.
@@ -85,11 +85,11 @@ in_plain=$!; pids+=($in_plain)
 on surface timeout 60 "$bin/plumb" topic echo plumb/sensor/raw --security "$other/enclaves/plumb-monitor" --csv --count 1 \
   --timeout 25 > "$work/in_other.txt" 2>&1 &
 in_other=$!; pids+=($in_other)
-on surface timeout 60 "$bin/plumb" topic echo plumb/sensor/raw --security "$(id plumb-survey)" --csv --count 1 --timeout 25 \
+on surface timeout 60 "$bin/plumb" topic echo plumb/sensor/raw --security "$(ident plumb-survey)" --csv --count 1 --timeout 25 \
   > "$work/in_denied.txt" 2>&1 &
 in_denied=$!; pids+=($in_denied)
 sleep 2
-on tool timeout 60 "$bin/plumb-sim" --security "$(id plumb-sim)" --tool-id "$marker" --inclination 1 --azimuth 45 --rpm 60 \
+on tool timeout 60 "$bin/plumb-sim" --security "$(ident plumb-sim)" --tool-id "$marker" --inclination 1 --azimuth 45 --rpm 60 \
   --duration 12 --snr-accel 40 --snr-mag 40 --rate x2 --reliable --wait-subscribers 30 > "$work/sim.log" 2>&1 &
 sim_pid=$!; pids+=($sim_pid)
 # Intruders publishing attitude that a secured reader must not accept (inclination 77, 66, 55).
@@ -100,15 +100,15 @@ on tool timeout 60 "$bin/plumb" topic pub plumb/attitude/compensated inclination
   --security "$other/enclaves/plumb-estimator" --count 40 --rate 4 --wait 3 > "$work/pub_other.txt" 2>&1 &
 pids+=($!)
 on tool timeout 60 "$bin/plumb" topic pub plumb/attitude/compensated inclination_deg=55 azimuth_deg=45 flags=1 estimator=denied \
-  --security "$(id plumb-survey)" --count 40 --rate 4 --wait 3 > "$work/pub_denied.txt" 2>&1 &
+  --security "$(ident plumb-survey)" --count 40 --rate 4 --wait 3 > "$work/pub_denied.txt" 2>&1 &
 pids+=($!)
 # Calibration, kept for late joiners: published once, then the next only 10 s later; a secured
 # reader that starts 4 s after the first must get it from the writer's history.
 on tool timeout 60 "$bin/plumb" topic pub plumb/calibration tool_id="$marker" calibration_id=late-joiner-1 \
-  reference_temp_c=25 --security "$(id plumb-calibrate)" --count 2 --rate 0.1 --wait 0 > "$work/cal_pub.txt" 2>&1 &
+  reference_temp_c=25 --security "$(ident plumb-calibrate)" --count 2 --rate 0.1 --wait 0 > "$work/cal_pub.txt" 2>&1 &
 pids+=($!)
 sleep 4
-on surface timeout 30 "$bin/plumb" topic echo plumb/calibration --security "$(id plumb-monitor)" --count 1 --timeout 5.5 \
+on surface timeout 30 "$bin/plumb" topic echo plumb/calibration --security "$(ident plumb-monitor)" --count 1 --timeout 5.5 \
   > "$work/cal.txt" 2>&1 && grep -q "late-joiner-1" "$work/cal.txt" &&
   pass "calibration reached a secured late joiner from the writer's history" ||
   fail "calibration late joiner: $(tail -3 "$work/cal.txt")"
