@@ -40,8 +40,17 @@ void require(const fs::path& path, const std::string& what) {
 }
 
 // A new EC P-256 key, created readable by its owner only.
+// The umask makes openssl create the file 0600: never readable by others, not even for a moment.
 void make_key(const fs::path& path) {
-  run_openssl({"genpkey", "-algorithm", "EC", "-pkeyopt", "ec_paramgen_curve:prime256v1", "-out", path.string()});
+  fs::remove(path);
+  const mode_t old_mask = ::umask(077);
+  try {
+    run_openssl({"genpkey", "-algorithm", "EC", "-pkeyopt", "ec_paramgen_curve:prime256v1", "-out", path.string()});
+  } catch (...) {
+    ::umask(old_mask);
+    throw;
+  }
+  ::umask(old_mask);
   fs::permissions(path, fs::perms(0600));
 }
 
