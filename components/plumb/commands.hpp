@@ -16,6 +16,7 @@ void add_export_command(CLI::App& app);      // export (a recorded topic as CSV)
 void add_survey_command(CLI::App& app);      // survey (offline: stations, QC, minimum curvature, uncertainty)
 void add_status_command(CLI::App& app);      // status (components seen on the network)
 void add_config_command(CLI::App& app);      // config check (DDS XML files for other applications)
+void add_security_command(CLI::App& app);    // security create-keystore | create-identity | create-permissions | check
 
 // Set by a subcommand's callback: the process exit code.
 extern int g_exit_code;

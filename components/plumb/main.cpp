@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   plumb::cli::add_survey_command(app);
   plumb::cli::add_status_command(app);
   plumb::cli::add_config_command(app);
+  plumb::cli::add_security_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

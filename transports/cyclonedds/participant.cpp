@@ -10,6 +10,7 @@
 #include "domain_config.hpp"
 #include "endpoints.hpp"
 #include "entity.hpp"
+#include "security.hpp"
 
 namespace plumb::transport::cyclonedds {
 
@@ -94,9 +95,18 @@ class CycloneParticipant final : public Participant {
       : domain_(acquire_domain(options.domain_id, options.interface)) {
     dds_qos_t* qos = dds_create_qos();
     dds_qset_entity_name(qos, options.name.c_str());  // shows in discovery (ddsls, Fast DDS monitor)
+    if (!options.security.empty()) {
+      try {
+        add_security(qos, check_security_files(options.security));
+      } catch (...) {
+        dds_delete_qos(qos);
+        throw;
+      }
+    }
     const dds_entity_t handle = dds_create_participant(static_cast<dds_domainid_t>(options.domain_id), qos, nullptr);
     dds_delete_qos(qos);
-    check(handle, "cannot create a participant on domain " + std::to_string(options.domain_id));
+    check(handle, "cannot create a participant on domain " + std::to_string(options.domain_id) +
+                      (options.security.empty() ? std::string() : " with the security of " + options.security));
     participant_ = Entity(handle);
     // Created now so that they collect every endpoint discovered from here on.
     publications_ = Entity(check(dds_create_reader(participant_.get(), DDS_BUILTIN_TOPIC_DCPSPUBLICATION, nullptr, nullptr),

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "plumb/core/number.hpp"
+#include "plumb/transport/security.hpp"
 
 namespace plumb::components {
 
@@ -28,6 +29,9 @@ void add_transport_options(CLI::App& app, TransportOptions& options) {
   app.add_option("--domain", options.domain_id, "DDS domain id 0..232 (default: $PLUMB_DOMAIN_ID, else 0)");
   app.add_option("--interface", options.interface,
                  "network interface name or IPv4 address to use (default: $PLUMB_INTERFACE, else loopback only)");
+  app.add_option("--security", options.security,
+                 "DDS Security: identity folder made by `plumb security create-identity` (default: $PLUMB_SECURITY, "
+                 "else unsecured); refused, never ignored, when a check fails (docs/security.md)");
 }
 
 void add_param_option(CLI::App& app, std::vector<std::string>& params) {
@@ -40,6 +44,7 @@ Connection connect(const TransportOptions& options, const std::string& participa
   transport::ParticipantOptions p;
   p.name = participant_name;
   p.interface = options.interface.empty() ? env_or("PLUMB_INTERFACE", "") : options.interface;
+  p.security = options.security.empty() ? env_or(transport::kSecurityEnv, "") : options.security;
   if (options.domain_id >= 0) {
     p.domain_id = options.domain_id;
   } else {

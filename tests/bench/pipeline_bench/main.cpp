@@ -178,7 +178,7 @@ int main(int argc, char** argv) {
                 "median/mirror");
     for (const auto& [pub, host] : std::vector<std::pair<std::string, std::string>>{
              {"cyclonedds", "cyclonedds"}, {"fastdds", "fastdds"}, {"cyclonedds", "fastdds"}, {"fastdds", "cyclonedds"}}) {
-      components::TransportOptions t{pub, domain, ""};
+      components::TransportOptions t{pub, domain, "", ""};
       const std::string d = std::to_string(domain);
       const pid_t m = spawn({(bin / "plumb-bench-pipeline").string(), "--mirror", "--transport", host, "--domain", d});
       const auto base = measure(t, {"mirror"}, seconds / 2, rate_hz);

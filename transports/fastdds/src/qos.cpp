@@ -8,6 +8,7 @@
 #include <string>
 
 #include "network_interface.hpp"
+#include "plumb/transport/security.hpp"
 
 namespace plumb::transport::fastdds {
 namespace {
@@ -55,6 +56,23 @@ void apply(const Qos& in, dds::ReliabilityQosPolicy& reliability, dds::Durabilit
   representation.m_value.push_back(dds::XCDR_DATA_REPRESENTATION);  // XCDR1, what Cyclone DDS 0.10 speaks
 }
 
+// Fast DDS's builtin plugins (PKI-DH, Access-Permissions, AES-GCM-GMAC) on the checked files.
+// Fast DDS 2.9 reads only file:// URIs ("file:" alone is taken as a missing file).
+void add_security(dds::DomainParticipantQos& qos, const SecurityFiles& files) {
+  auto& properties = qos.properties().properties();
+  auto set = [&](const std::string& name, const std::string& value) { properties.emplace_back(name, value); };
+  const std::string uri = "file://";
+  set("dds.sec.auth.plugin", "builtin.PKI-DH");
+  set("dds.sec.auth.builtin.PKI-DH.identity_ca", uri + files.identity_ca);
+  set("dds.sec.auth.builtin.PKI-DH.identity_certificate", uri + files.certificate);
+  set("dds.sec.auth.builtin.PKI-DH.private_key", uri + files.private_key);
+  set("dds.sec.access.plugin", "builtin.Access-Permissions");
+  set("dds.sec.access.builtin.Access-Permissions.permissions_ca", uri + files.permissions_ca);
+  set("dds.sec.access.builtin.Access-Permissions.governance", uri + files.governance);
+  set("dds.sec.access.builtin.Access-Permissions.permissions", uri + files.permissions);
+  set("dds.sec.crypto.plugin", "builtin.AES-GCM-GMAC");
+}
+
 }  // namespace
 
 dds::DomainParticipantQos participant_qos(const ParticipantOptions& options) {
@@ -85,6 +103,7 @@ dds::DomainParticipantQos participant_qos(const ParticipantOptions& options) {
     qos.wire_protocol().default_unicast_locator_list.push_back(udp_locator(address));
   }
   qos.transport().user_transports.push_back(udp);
+  if (!options.security.empty()) add_security(qos, check_security_files(options.security));
   return qos;
 }
 

@@ -54,6 +54,10 @@ struct ParticipantOptions {
   // loopback only, the safe default for one computer; set it to run across computers.
   std::string interface;
   std::string name = "plumb";  // participant name, shows up in discovery
+  // DDS Security: an identity folder (security.hpp; made by `plumb security create-identity`).
+  // Empty means an unsecured participant. When set, the plugin checks the folder with
+  // check_security_files() and throws Error rather than ever fall back to an unsecured participant.
+  std::string security;
 };
 
 class RawWriter {

@@ -17,9 +17,10 @@ struct TransportOptions {
   std::string transport;   // "" -> $PLUMB_TRANSPORT -> cyclonedds
   int domain_id = -1;      // -1 -> $PLUMB_DOMAIN_ID -> 0
   std::string interface;   // "" -> $PLUMB_INTERFACE -> loopback only
+  std::string security;    // "" -> $PLUMB_SECURITY -> unsecured (an identity folder, docs/security.md)
 };
 
-// Adds --transport, --domain, --interface to `app` (or a subcommand).
+// Adds --transport, --domain, --interface, --security to `app` (or a subcommand).
 void add_transport_options(CLI::App& app, TransportOptions& options);
 
 // --param [PLUGIN.]KEY=VALUE, the one parameter grammar of plumb estimate, plumb compare and
