@@ -8,6 +8,7 @@
 #include <string>
 
 #include "network_interface.hpp"
+#include "plumb/transport/discovery_timing.hpp"
 
 namespace plumb::transport::fastdds {
 namespace {
@@ -85,6 +86,12 @@ dds::DomainParticipantQos participant_qos(const ParticipantOptions& options) {
     qos.wire_protocol().default_unicast_locator_list.push_back(udp_locator(address));
   }
   qos.transport().user_transports.push_back(udp);
+  // The same participant lease and announcement period as the Cyclone DDS plugin
+  // (plumb/transport/discovery_timing.hpp; transports/cyclonedds/domain_config.cpp says why).
+  const DiscoveryTiming timing = discovery_timing();
+  auto& discovery = qos.wire_protocol().builtin.discovery_config;
+  discovery.leaseDuration = eprosima::fastrtps::Duration_t(static_cast<long double>(timing.lease_s));
+  discovery.leaseDuration_announcementperiod = eprosima::fastrtps::Duration_t(static_cast<long double>(timing.announce_s));
   return qos;
 }
 
