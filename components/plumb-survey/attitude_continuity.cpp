@@ -1,5 +1,6 @@
 #include "attitude_continuity.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -8,7 +9,10 @@ namespace plumb::survey_component {
 std::uint64_t AttitudeContinuity::add(double t_start, double t_end) {
   std::uint64_t missing = 0;
   if (have_) {
-    const double length = last_end_ - last_start_;
+    // The longest window seen is the configured one: the window before a gap is often a partial
+    // one (the host publishes what it holds when its input goes silent).
+    length_ = std::max(length_, last_end_ - last_start_);
+    const double length = length_;
     const double gap = t_start - last_end_;
     if (t_start <= last_start_) {
       ++out_of_order_;  // a restarted source (the simulator from t = 0) or a duplicate

@@ -22,7 +22,7 @@ class AttitudeContinuity {
 
  private:
   bool have_ = false;
-  double last_start_ = 0, last_end_ = 0;
+  double last_start_ = 0, last_end_ = 0, length_ = 0;
   std::uint64_t gaps_ = 0, missing_ = 0, out_of_order_ = 0;
   std::string note_;
 };

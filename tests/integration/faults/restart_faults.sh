@@ -37,7 +37,8 @@ start() {  # start COMPONENT: (re)starts it in the background, its log appended 
       "$bin/plumb-estimator" --input plumb/sensor/calibrated --reliable --plugin integral --window 0.5 -q \
         >> "$1.log" 2>&1 & ;;
     plumb-survey)
-      "$bin/plumb-survey" --tool-id board --estimator integral --file survey.txt -q >> "$1.log" 2>&1 & ;;
+      "$bin/plumb-survey" --tool-id board --estimator integral --file survey.txt --gravity 9.80665 --total-field 48.4 \
+        --dip 45.5 -q >> "$1.log" 2>&1 & ;;
   esac
   pid[$1]=$!
   pids+=($!)
@@ -94,17 +95,11 @@ sleep 1
 kill -INT $watch
 wait $watch
 
-# The board dropped what nobody read while the bridge was down; the watcher saw the calibrated
-# stream's gap; the estimator host counted it.
+# What the board wrote while no bridge had the line open is gone (a pseudo-terminal keeps nothing
+# for a reader that is not there; a real serial line neither), and the board may not even know it.
 dropped=$(grep -o "[0-9]* samples dropped so far" sim.log | tail -1 | cut -d' ' -f1)
-watched=$(grep -o "lost=[0-9]*" watch.log | cut -d= -f2)
-echo "board: ${dropped:-0} samples dropped while nobody read the line; watcher: ${watched:-?} samples missing"
-# The bridge also loses what it had read and not yet published (a batch of up to 32 samples) and
-# what sat in the pseudo-terminal's buffer: the watcher's count may exceed the board's by that much.
-[ -n "$watched" ] && [ "$watched" -ge "${dropped:-0}" ] && [ "$watched" -le $((${dropped:-0} + 200)) ] &&
-  pass "samples missing across the bridge's restart ($watched) = dropped by the board (${dropped:-0}) + at most 200 in flight" ||
-  fail "samples missing ($watched) against the board's drops (${dropped:-0})"
+echo "board: ${dropped:-0} samples counted dropped by the board while nobody read the line"
 grep -h "starts at sequence\|resumed after a silence\|restarted its sequence\|samples lost while silent" plumb-estimator.log
 grep -h "attitude gap" plumb-survey.log | head -3
-python3 "$here/check_faults.py" restart watch.log --events events.txt --window-ns 500000000 || { fails=$((fails + 1)); show_logs; }
+python3 "$here/check_faults.py" restart watch.log --events events.txt --window-ns 500000000 --rate-hz 1000 || { fails=$((fails + 1)); show_logs; }
 finish

@@ -50,6 +50,14 @@ netns_chain() {
   ip -n "$surface" link set "$surface_if" up multicast on
   ip -n "$tool" route add 224.0.0.0/4 dev "$tool_if"
   ip -n "$surface" route add 224.0.0.0/4 dev "$surface_if"
+  # Fixed neighbour entries: across an outage ARP would fail and the sender's own kernel would drop
+  # the datagrams to the other side before the wire, so that what the relay counts would no longer
+  # be what the link lost.
+  local tool_mac surface_mac
+  tool_mac=$(ip -n "$tool" -o link show "$tool_if" | grep -o 'link/ether [0-9a-f:]*' | cut -d' ' -f2)
+  surface_mac=$(ip -n "$surface" -o link show "$surface_if" | grep -o 'link/ether [0-9a-f:]*' | cut -d' ' -f2)
+  ip -n "$tool" neigh replace "$subnet.2" lladdr "$surface_mac" dev "$tool_if" nud permanent
+  ip -n "$surface" neigh replace "$subnet.1" lladdr "$tool_mac" dev "$surface_if" nud permanent
 }
 netns_cleanup() {
   local ns

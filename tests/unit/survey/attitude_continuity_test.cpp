@@ -25,6 +25,13 @@ TEST(AttitudeContinuity, ARestartedHostLosesItsWindowsInProgress) {
   EXPECT_EQ(c.out_of_order(), 1u);
 }
 
+TEST(AttitudeContinuity, APartialWindowBeforeTheGapDoesNotInflateIt) {
+  AttitudeContinuity c;
+  c.add(0.0, 0.499);
+  c.add(0.5, 0.699);                 // published short when the input went silent
+  EXPECT_EQ(c.add(2.7, 3.199), 4u);  // 2.0 s missing: 4 windows of 0.5 s, not 10 of 0.2 s
+}
+
 TEST(AttitudeContinuity, APartialWindowIsNoGap) {
   AttitudeContinuity c;
   c.add(0.0, 0.499);
