@@ -186,7 +186,11 @@ def restart(a):
         got = survey[2]["attitude_windows_missing"]
         print(f"plumb-survey counted {got} attitude windows missing in {survey[2].get('attitude_gaps')} gaps "
               f"(the watcher: {before}, {seen} in all)")
-        check(got == before, "plumb-survey counts the attitude windows the restarts cost")
+        # Each reader counts what it missed, and one that matches the restarted estimator host later
+        # (discovery takes 0.1 to 4 s) also misses the windows published before: allow 2 s of windows.
+        slack = round(2e9 / a.window_ns)
+        check(abs(got - before) <= slack,
+              f"plumb-survey counts the attitude windows the restarts cost (within {slack}: its own discovery)")
     gaps_elsewhere = [e for e in sensor if e[0] == "sensor_gap" and not any(
         c == "plumb-bridge" and t <= e[1] <= starts.get("plumb-bridge", t) + 15 for c, t in kills)]
     check(not gaps_elsewhere, f"no calibrated sample lost but across the bridge's restart ({len(gaps_elsewhere)} gaps elsewhere)")
