@@ -75,10 +75,15 @@ std::string discovery_timing_xml() {
 }
 
 // Parts common to both setups: no shared memory (iceoryx needs its own daemon and does not cross
-// users), no tracing, UDP only.
+// users), no tracing, UDP only, and one receive thread for all sockets. With a thread per socket
+// (Cyclone's default) shutting down wakes each thread with a datagram sent to itself: when the
+// network interface is down that datagram never arrives and the component hung on SIGTERM for
+// good (eclipse-cyclonedds/cyclonedds#1337; seen in the fault tests: plumb-sim with its link down).
+// One thread waits on all sockets and a trigger of its own, and stops at once.
 constexpr const char* kCommon =
     "<SharedMemory><Enable>false</Enable></SharedMemory>"
-    "<Tracing><Verbosity>none</Verbosity></Tracing>";
+    "<Tracing><Verbosity>none</Verbosity></Tracing>"
+    "<Internal><MultipleReceiveThreads>false</MultipleReceiveThreads></Internal>";
 
 }  // namespace
 

@@ -11,6 +11,7 @@
 #          started on the tool side during the outage gets the calibration once the link is back.
 # Phase 2: 20 % loss and 50 ms delay each way for 15 s: reliable attitude complete; the samples the
 #          surface host counts as lost equal what linkem dropped (batches of 10 samples).
+# At the end the tool side's interface goes down, and its components must still stop on SIGINT.
 # usage: link_faults.sh BIN_DIR TOOL_TRANSPORT SURFACE_TRANSPORT DOMAIN
 set -uo pipefail
 bin=$1 tool_t=$2 surface_t=$3
@@ -102,9 +103,14 @@ sleep 4
 for p in $sim $tool_host $surface_host $calibrate; do
   kill -0 $p 2>/dev/null || fail "a component ended during the faults (pid $p): $(show_logs)"
 done
-stop $sim
+# Nothing hangs: the tool computer's interface goes down (a cable pulled, a switch port dead) and
+# its components still stop on SIGINT (Cyclone DDS used to wait for ever for a datagram to itself).
 sleep 2  # the last reliable attitude, status
-for p in $tool_host $surface_host $watch $tool_watch $calibrate $linkem; do stop $p; done
+ip -n "$tool" link set "$tool_if" down
+n_fails=$fails
+for p in $sim $tool_host $tool_watch; do stop $p; done
+[ $fails -eq $n_fails ] && pass "the tool side stopped on SIGINT with its interface down"
+for p in $surface_host $watch $calibrate $linkem; do stop $p; done
 echo "linkem: $(tr '\n' ' ' < "$work/link.txt")"
 
 python3 "$here/check_faults.py" link "$work/watch.log" --linkem "$work/link.txt" --batch $batch \
