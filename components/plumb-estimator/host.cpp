@@ -160,7 +160,7 @@ int run_host(const HostOptions& o) {
   }
   status.publish("stopping", counters());
   std::cerr << "plumb-estimator: " << input.batches() << " batches, " << input.samples() << " samples ("
-            << input.lost_samples() << " lost in transit)";
+            << input.lost_samples() << " lost in transit, " << input.silent_lost_samples() << " lost while silent)";
   for (const auto& [tool, runner] : runners)
     for (const auto& slot : runner.slots())
       std::cerr << ", " << slot.name << (runners.size() > 1 ? " (tool '" + tool + "')" : std::string()) << ": "

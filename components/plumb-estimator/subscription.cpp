@@ -27,6 +27,20 @@ void SensorSubscription::take_depth() {
   }
 }
 
+// Said in the log when it happens, so that an operator reading it knows where the host joined a
+// stream and what a pause cost (the counters say how much in total).
+void SensorSubscription::note_stream_change(const std::string& tool, const SequenceAccount& account, std::uint64_t seq) {
+  const std::string who = "plumb-estimator: tool '" + tool + "'";
+  if (!account.have_seq)
+    std::cerr << who << " starts at sequence " << seq << (seq > 0 ? " (joined a running stream)" : "") << std::endl;
+  else if (account.paused && seq > account.next_seq)
+    std::cerr << who << " resumed after a silence at sequence " << seq << ": " << seq - account.next_seq
+              << " samples lost while silent" << std::endl;
+  else if (account.paused && seq < account.next_seq)
+    std::cerr << who << " restarted its sequence (now " << seq << ", was " << account.next_seq - 1
+              << "): a new source" << std::endl;
+}
+
 bool SensorSubscription::route(const topics::SensorBatch& batch, ToolChunks& out) {
   SequenceAccount* account = streams_.route(batch.tool_id);
   if (!account) {
@@ -46,6 +60,7 @@ bool SensorSubscription::route(const topics::SensorBatch& batch, ToolChunks& out
   auto depth = depth_m_.find(batch.tool_id);
   if (depth == depth_m_.end()) depth = depth_m_.find("");
   auto& chunk = out[batch.tool_id];
+  if (!batch.samples.empty()) note_stream_change(batch.tool_id, *account, batch.samples.front().seq);
   for (const auto& m : batch.samples) {
     account->account(m.seq);
     chunk.push_back(components::from_topic(m));
@@ -88,6 +103,9 @@ components::CounterList SensorSubscription::counters() const {
           {"seq_gaps", streams_.gaps()},
           {"lost_samples", streams_.lost()},
           {"seq_backwards", streams_.backwards()},
+          {"silent_gaps", streams_.silent_gaps()},
+          {"silent_lost_samples", streams_.silent_lost()},
+          {"source_restarts", streams_.source_restarts()},
           {"other_tool_batches", streams_.other_tool_batches()},
           {"depth_messages", depth_messages_},
           {"uncalibrated_samples", uncalibrated_samples_}};

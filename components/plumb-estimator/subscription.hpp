@@ -35,11 +35,13 @@ class SensorSubscription {
   components::CounterList counters() const;
   std::uint64_t samples() const { return samples_; }
   std::uint64_t lost_samples() const { return streams_.lost(); }
+  std::uint64_t silent_lost_samples() const { return streams_.silent_lost(); }
   std::size_t tools() const { return streams_.streams().size(); }
   std::uint64_t batches() const { return batches_; }
 
  private:
   void take_depth();
+  void note_stream_change(const std::string& tool, const SequenceAccount& account, std::uint64_t seq);
   // One batch into its tool's chunk (the take loop stays a loop over batches).
   bool route(const topics::SensorBatch& batch, ToolChunks& out);
   transport::Reader<topics::SensorBatch> reader_;

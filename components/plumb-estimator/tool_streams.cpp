@@ -3,7 +3,15 @@
 namespace plumb::estimator_component {
 
 void SequenceAccount::account(std::uint64_t seq) {
-  if (have_seq && seq != next_seq) {
+  if (paused) {
+    paused = false;
+    if (seq > next_seq) {
+      ++silent_gaps;
+      silent_lost += seq - next_seq;
+    } else if (seq < next_seq) {
+      ++source_restarts;
+    }
+  } else if (have_seq && seq != next_seq) {
     if (seq > next_seq) {
       ++gaps;
       lost += seq - next_seq;
@@ -36,6 +44,24 @@ std::uint64_t ToolStreams::gaps() const {
 std::uint64_t ToolStreams::lost() const {
   std::uint64_t n = 0;
   for (const auto& [tool, a] : streams_) n += a.lost;
+  return n;
+}
+
+std::uint64_t ToolStreams::silent_gaps() const {
+  std::uint64_t n = 0;
+  for (const auto& [tool, a] : streams_) n += a.silent_gaps;
+  return n;
+}
+
+std::uint64_t ToolStreams::silent_lost() const {
+  std::uint64_t n = 0;
+  for (const auto& [tool, a] : streams_) n += a.silent_lost;
+  return n;
+}
+
+std::uint64_t ToolStreams::source_restarts() const {
+  std::uint64_t n = 0;
+  for (const auto& [tool, a] : streams_) n += a.source_restarts;
   return n;
 }
 

@@ -11,13 +11,18 @@
 namespace plumb::estimator_component {
 
 // The sequence numbers of one tool's samples: gaps (and the samples they lost) and steps back.
+// Across a pause (the stream went silent: a link down, a bridge restarted) the numbers are kept
+// apart: a jump forward is what the pause cost (silent_lost, in silent_gaps), a step back is a
+// source that started again from its beginning (source_restarts), neither a fault of the stream.
 struct SequenceAccount {
   bool have_seq = false;
+  bool paused = false;
   std::uint64_t next_seq = 0;
   std::uint64_t gaps = 0, lost = 0, backwards = 0;
+  std::uint64_t silent_gaps = 0, silent_lost = 0, source_restarts = 0;
   void account(std::uint64_t seq);
   // After a pause: the next sequence number is not expected to follow the last one.
-  void restart() { have_seq = false; }
+  void restart() { paused = have_seq; }
 };
 
 class ToolStreams {
@@ -34,6 +39,9 @@ class ToolStreams {
   std::uint64_t gaps() const;
   std::uint64_t lost() const;
   std::uint64_t backwards() const;
+  std::uint64_t silent_gaps() const;
+  std::uint64_t silent_lost() const;
+  std::uint64_t source_restarts() const;
 
  private:
   std::string selected_;

@@ -8,6 +8,7 @@
 #include "plumb/components/convert.hpp"
 #include "plumb/components/status_reporter.hpp"
 #include "plumb/transport/topic_names.hpp"
+#include "attitude_continuity.hpp"
 #include "station_message.hpp"
 #include "survey_store.hpp"
 
@@ -62,6 +63,7 @@ int run_live_survey(const LiveOptions& o) {
   }
 
   std::uint64_t refused = 0, depth_messages = 0, other_tool = 0;
+  AttitudeContinuity continuity;
   std::string last_error;
   const auto on_station = [&](survey::Station s) {
     if (depth_sd >= 0) s.md_sd_m = depth_sd;
@@ -99,6 +101,8 @@ int run_live_survey(const LiveOptions& o) {
                                    {"repeat_stops", c.repeat_stops},
                                    {"depth_messages", depth_messages},
                                    {"other_tool_messages", other_tool},
+                                   {"attitude_gaps", continuity.gaps()},
+                                   {"attitude_windows_missing", continuity.windows_missing()},
                                    {"readers", writer.matched_readers()}};
   };
   const auto t0 = Clock::now();
@@ -139,7 +143,9 @@ int run_live_survey(const LiveOptions& o) {
         ++other_tool;
         continue;
       }
-      detector.add_attitude(components::from_topic(a), a.tool_id);
+      const Estimate e = components::from_topic(a);
+      if (continuity.add(e.t_start, e.t_end) > 0) note(continuity.last_note());
+      detector.add_attitude(e, a.tool_id);
     }
     if (status.due()) status.publish(refused ? "degraded" : "running", counters(), last_error);
   }

@@ -9,6 +9,7 @@
 #include <cctype>
 #include <vector>
 
+#include "plumb/transport/discovery_timing.hpp"
 #include "plumb/transport/transport.hpp"
 
 namespace plumb::transport::cyclonedds {
@@ -61,11 +62,28 @@ Ipv4Interface find_interface(const std::string& wanted) {
               (available.empty() ? std::string("none") : available));
 }
 
+// How long a participant that says nothing stays matched, and how often ours say they are alive
+// (plumb/transport/discovery_timing.hpp). Cyclone's default lease (10 s) ended the match of every
+// remote participant across a 10 s link outage: its reliable writers forgot their readers and what
+// was written meanwhile was lost for good (attitude windows in the fault tests, docs/operations.md).
+// Announcing every 3 s, as Fast DDS does, finds a peer again within seconds once an outage longer
+// than the lease has ended a match (Cyclone's own default announces every lease - 2 s).
+std::string discovery_timing_xml() {
+  const DiscoveryTiming t = discovery_timing();
+  const auto ms = [](double s) { return std::to_string(static_cast<long long>(s * 1000)) + " ms"; };
+  return "<LeaseDuration>" + ms(t.lease_s) + "</LeaseDuration><SPDPInterval>" + ms(t.announce_s) + "</SPDPInterval>";
+}
+
 // Parts common to both setups: no shared memory (iceoryx needs its own daemon and does not cross
-// users), no tracing, UDP only.
+// users), no tracing, UDP only, and one receive thread for all sockets. With a thread per socket
+// (Cyclone's default) shutting down wakes each thread with a datagram sent to itself: when the
+// network interface is down that datagram never arrives and the component hung on SIGTERM for
+// good (eclipse-cyclonedds/cyclonedds#1337; seen in the fault tests: plumb-sim with its link down).
+// One thread waits on all sockets and a trigger of its own, and stops at once.
 constexpr const char* kCommon =
     "<SharedMemory><Enable>false</Enable></SharedMemory>"
-    "<Tracing><Verbosity>none</Verbosity></Tracing>";
+    "<Tracing><Verbosity>none</Verbosity></Tracing>"
+    "<Internal><MultipleReceiveThreads>false</MultipleReceiveThreads></Internal>";
 
 }  // namespace
 
@@ -82,7 +100,8 @@ std::string domain_config(const std::string& interface) {
                "<AllowMulticast>false</AllowMulticast></General>"
                "<Discovery><ParticipantIndex>auto</ParticipantIndex>"
                "<MaxAutoParticipantIndex>40</MaxAutoParticipantIndex>"
-               "<Peers><Peer address=\"127.0.0.1\"/></Peers></Discovery>") +
+               "<Peers><Peer address=\"127.0.0.1\"/></Peers>") +
+           discovery_timing_xml() + "</Discovery>" +
            kCommon + "</Domain></CycloneDDS>";
   }
   const std::string attribute = is_ipv4_address(interface) ? "address" : "name";
@@ -91,7 +110,8 @@ std::string domain_config(const std::string& interface) {
          attribute + "=\"" + interface +
          "\"/></Interfaces></General>"
          "<Discovery><ParticipantIndex>auto</ParticipantIndex>"
-         "<MaxAutoParticipantIndex>40</MaxAutoParticipantIndex></Discovery>" +
+         "<MaxAutoParticipantIndex>40</MaxAutoParticipantIndex>" +
+         discovery_timing_xml() + "</Discovery>" +
          kCommon + "</Domain></CycloneDDS>";
 }
 

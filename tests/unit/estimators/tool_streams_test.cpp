@@ -58,5 +58,32 @@ TEST(ToolStreams, RestartForgetsTheExpectedNumber) {
   EXPECT_EQ(streams.lost(), 0u);
 }
 
+TEST(ToolStreams, PauseCostsAreCountedApart) {
+  ToolStreams streams;
+  feed(streams, "A", 0, 10);
+  streams.restart_all();
+  feed(streams, "A", 1000, 10);  // a link down: 990 samples never came
+  EXPECT_EQ(streams.silent_gaps(), 1u);
+  EXPECT_EQ(streams.silent_lost(), 990u);
+  streams.restart_all();
+  feed(streams, "A", 0, 10);  // the source started again
+  EXPECT_EQ(streams.source_restarts(), 1u);
+  streams.restart_all();
+  feed(streams, "A", 10, 10);  // a pause that lost nothing
+  EXPECT_EQ(streams.silent_gaps(), 1u);
+  EXPECT_EQ(streams.gaps(), 0u);
+  EXPECT_EQ(streams.lost(), 0u);
+  EXPECT_EQ(streams.backwards(), 0u);
+}
+
+TEST(ToolStreams, PauseBeforeTheFirstSampleIsNoGap) {
+  ToolStreams streams;
+  streams.route("A");
+  streams.restart_all();
+  feed(streams, "A", 500, 10);
+  EXPECT_EQ(streams.silent_gaps(), 0u);
+  EXPECT_EQ(streams.lost(), 0u);
+}
+
 }  // namespace
 }  // namespace plumb::estimator_component

@@ -186,6 +186,15 @@ TEST(StationDetector, OneStationPerStopAndARepeatIsSaid) {
   EXPECT_GT(run.detector.counters().moving_windows, 20u);
 }
 
+TEST(StationDetector, WithoutDepthWindowsWaitNoLongerThanTheDepthHistory) {
+  StopAndGo run;
+  const double history = 600;  // the default depth_history_s
+  for (double t = 0; t < 1000; t += 2) run.detector.add_attitude(window(t, t + 2, true), "t1");
+  // Windows more than the history older than the newest were decided, without depth; the rest wait.
+  EXPECT_NEAR(static_cast<double>(run.detector.counters().no_depth_windows), (1000 - history) / 2, 2);
+  EXPECT_TRUE(run.stations.empty());
+}
+
 TEST(StationDetector, ResumedDetectorNeitherRepeatsNorLosesStations) {
   StopAndGo first;
   feed(first, 0, 50);  // killed during the second stop, after its station

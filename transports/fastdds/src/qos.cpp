@@ -8,6 +8,7 @@
 #include <string>
 
 #include "network_interface.hpp"
+#include "plumb/transport/discovery_timing.hpp"
 #include "plumb/transport/security.hpp"
 
 namespace plumb::transport::fastdds {
@@ -104,6 +105,12 @@ dds::DomainParticipantQos participant_qos(const ParticipantOptions& options) {
   }
   qos.transport().user_transports.push_back(udp);
   if (!options.security.empty()) add_security(qos, check_security_files(options.security));
+  // The same participant lease and announcement period as the Cyclone DDS plugin
+  // (plumb/transport/discovery_timing.hpp; transports/cyclonedds/domain_config.cpp says why).
+  const DiscoveryTiming timing = discovery_timing();
+  auto& discovery = qos.wire_protocol().builtin.discovery_config;
+  discovery.leaseDuration = eprosima::fastrtps::Duration_t(static_cast<long double>(timing.lease_s));
+  discovery.leaseDuration_announcementperiod = eprosima::fastrtps::Duration_t(static_cast<long double>(timing.announce_s));
   return qos;
 }
 
