@@ -9,6 +9,8 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
+#include <span>
 
 #include "estimate_line.hpp"
 
@@ -16,6 +18,7 @@
 #include "plumb/estimator/loader.hpp"
 #include "publication.hpp"
 #include "subscription.hpp"
+#include "tool_streams.hpp"
 #include "truth_lookup.hpp"
 
 namespace plumb::estimator_component {
@@ -90,8 +93,11 @@ int run_host(const HostOptions& o) {
       if (!o.quiet) print_estimate(e, truth.get(), input.tools() > 1 ? " tool '" + tool + "'" : std::string());
     };
   };
+  std::map<std::string, std::optional<double>> last_t;  // tool id -> time of its last sample
+  std::uint64_t new_runs = 0;
   const auto counters = [&] {
     components::CounterList all = input.counters();
+    all.emplace_back("new_runs", new_runs);
     // Summed over the tools, in the plugins' order: the per-plugin counters keep their names.
     const std::size_t own = all.size();
     if (runners.empty())
@@ -138,7 +144,22 @@ int run_host(const HostOptions& o) {
                         << std::endl;
           checked_gyro = true;
         }
-        runner.push(chunk, publisher_for(tool));
+        // A source that started again (its clock back at the beginning) is a new run: what the
+        // old run's windows hold is published, and the plugins start afresh.
+        std::span<const Sample> rest(chunk);
+        for (std::size_t cut; (cut = new_run_start(rest, last_t[tool])) < rest.size();) {
+          const double before = cut > 0 ? rest[cut - 1].t : last_t[tool].value_or(0.0);
+          runner.push(rest.first(cut), publisher_for(tool));
+          runner.flush(publisher_for(tool));
+          runner.reset();
+          ++new_runs;
+          std::cerr << "plumb-estimator: tool '" << tool << "': time went back from " << before << " s to "
+                    << rest[cut].t << " s: a new run, estimated afresh" << std::endl;
+          last_t[tool].reset();
+          rest = rest.subspan(cut);
+        }
+        runner.push(rest, publisher_for(tool));
+        last_t[tool] = rest.back().t;
         chunk.clear();
       }
       pending = true;

@@ -23,6 +23,14 @@ void SequenceAccount::account(std::uint64_t seq) {
   next_seq = seq + 1;
 }
 
+std::size_t new_run_start(std::span<const Sample> chunk, std::optional<double> last_t) {
+  for (std::size_t i = 0; i < chunk.size(); ++i) {
+    if (last_t && chunk[i].t < *last_t) return i;
+    last_t = chunk[i].t;
+  }
+  return chunk.size();
+}
+
 SequenceAccount* ToolStreams::route(const std::string& tool_id) {
   if (!selected_.empty() && tool_id != selected_) {
     ++other_tool_batches_;

@@ -4,9 +4,14 @@
 // batches of every other tool are counted. Pure logic (no DDS), tested directly.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <map>
+#include <optional>
+#include <span>
 #include <string>
+
+#include "plumb/core/sample.hpp"
 
 namespace plumb::estimator_component {
 
@@ -24,6 +29,13 @@ struct SequenceAccount {
   // After a pause: the next sequence number is not expected to follow the last one.
   void restart() { paused = have_seq; }
 };
+
+// Where a tool's chunk of samples starts a new run: the index of the first sample whose time is
+// earlier than the one before it (`last_t`: the time of the tool's last sample before the chunk),
+// or chunk.size() when time never goes back. A source started again (a second plumb-sim run, a
+// replay from its beginning) restarts its clock; its samples would otherwise be refused by every
+// plugin as going back in time, and nothing more would be estimated for that tool.
+std::size_t new_run_start(std::span<const Sample> chunk, std::optional<double> last_t);
 
 class ToolStreams {
  public:

@@ -85,5 +85,26 @@ TEST(ToolStreams, PauseBeforeTheFirstSampleIsNoGap) {
   EXPECT_EQ(streams.lost(), 0u);
 }
 
+// A source started again restarts its clock: the chunk is cut where time goes back, against the
+// tool's last sample before the chunk too; equal times are not a new run.
+TEST(ToolStreams, NewRunStartsWhereTimeGoesBack) {
+  auto samples = [](std::initializer_list<double> times) {
+    std::vector<Sample> v;
+    for (double t : times) {
+      Sample s;
+      s.t = t;
+      v.push_back(s);
+    }
+    return v;
+  };
+  const auto steady = samples({1.0, 1.01, 1.02});
+  EXPECT_EQ(new_run_start(steady, std::nullopt), 3u);
+  EXPECT_EQ(new_run_start(steady, 0.99), 3u);
+  EXPECT_EQ(new_run_start(steady, 1.0), 3u);
+  EXPECT_EQ(new_run_start(steady, 5.0), 0u);
+  EXPECT_EQ(new_run_start(samples({3.98, 3.99, 0.0, 0.01}), 3.97), 2u);
+  EXPECT_EQ(new_run_start(samples({}), 1.0), 0u);
+}
+
 }  // namespace
 }  // namespace plumb::estimator_component
