@@ -51,6 +51,7 @@ int compare_file(const CompareFileOptions& o) {
   if (!o.csv_path.empty()) {
     csv.open(o.csv_path);
     if (!csv) throw std::runtime_error("cannot write '" + o.csv_path + "'");
+    csv.precision(10);
     csv << "plugin,rows,valid,azimuth_valid,inclination_mean_deg,inclination_sd_deg,azimuth_mean_deg,azimuth_sd_deg,"
            "median_inclination_sigma_deg,median_azimuth_sigma_deg,reference,matched,rms_inclination_diff_deg,"
            "rms_azimuth_diff_deg,inclination_within_2sigma,azimuth_within_2sigma\n";
