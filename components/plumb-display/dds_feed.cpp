@@ -8,13 +8,6 @@
 namespace plumb::display_component {
 namespace {
 
-double now_ms() {
-  return static_cast<double>(
-             std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
-                 .count()) *
-         1e-3;
-}
-
 // Messages per batched take.
 constexpr std::size_t kTakeBatch = 64;
 
@@ -36,7 +29,7 @@ template <class M> class TypedStream final : public DdsFeed::Stream {
   std::size_t drain(Hub& hub) override {
     std::size_t n = 0;
     while (reader_.take(taken_, kTakeBatch) > 0) {
-      const double rx = now_ms();
+      const double rx = wall_clock_ms();
       for (const M& m : taken_) deliver(hub, m, rx);
       n += taken_.size();
     }

@@ -7,13 +7,6 @@
 namespace plumb::display_component {
 namespace {
 
-double now_ms() {
-  return static_cast<double>(
-             std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
-                 .count()) *
-         1e-3;
-}
-
 void append_list(std::string& out, const char* name, std::size_t count, const auto& each) {
   out += ",\"";
   out += name;
@@ -47,7 +40,7 @@ std::optional<std::string> Outbox::next() {
     return frame;
   }
   std::string frame = "{\"type\":\"update\",\"sent\":";
-  append_json_number(frame, now_ms(), 1);
+  append_json_number(frame, wall_clock_ms(), 1);
   frame += ",\"drops\":" + std::to_string(dropped_);
   std::vector<Text> attitudes;
   for (auto& [key, queue] : attitudes_) attitudes.insert(attitudes.end(), queue.begin(), queue.end());
@@ -142,7 +135,7 @@ void Hub::station(const std::string& key, const std::string& json) {
 
 std::string Hub::hello_json() const {
   std::string out = "{\"type\":\"hello\",\"sent\":";
-  append_json_number(out, now_ms(), 1);
+  append_json_number(out, wall_clock_ms(), 1);
   out += ",\"history_s\":";
   append_json_number(out, options_.history_s, 0);
   out += ",\"history\":{";

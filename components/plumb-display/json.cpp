@@ -1,9 +1,15 @@
 #include "json.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
 namespace plumb::display_component {
+
+double wall_clock_ms() {
+  const auto since_epoch = std::chrono::system_clock::now().time_since_epoch();
+  return static_cast<double>(std::chrono::duration_cast<std::chrono::microseconds>(since_epoch).count()) * 1e-3;
+}
 
 void append_json_string(std::string& out, const std::string& text) {
   out += '"';

@@ -14,7 +14,10 @@ void append_json_string(std::string& out, const std::string& text);
 // Appends a number, or null for NaN and infinities (JSON has neither).
 void append_json_number(std::string& out, double value, int decimals);
 
-// `rx_ms`: when the display took the message (ms since the epoch): the page's latency reference.
+// Milliseconds since the epoch: the time stamps the page measures latency against.
+double wall_clock_ms();
+
+// `rx_ms`: when the display took the message (wall_clock_ms()): the page's latency reference.
 std::string attitude_json(const topics::Attitude& a, const std::string& key, double rx_ms);
 std::string status_json(const topics::ComponentStatus& s, const std::string& key, double rx_ms);
 std::string station_json(const topics::SurveyStation& s, const std::string& key);

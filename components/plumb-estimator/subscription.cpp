@@ -60,7 +60,11 @@ bool SensorSubscription::route(const topics::SensorBatch& batch, ToolChunks& out
   auto depth = depth_m_.find(batch.tool_id);
   if (depth == depth_m_.end()) depth = depth_m_.find("");
   auto& chunk = out[batch.tool_id];
-  if (!batch.samples.empty()) note_stream_change(batch.tool_id, *account, batch.samples.front().seq);
+  if (!batch.samples.empty()) {
+    account->clock(components::ns_to_seconds(batch.samples.front().stamp_ns),
+                   components::ns_to_seconds(batch.samples.back().stamp_ns));
+    note_stream_change(batch.tool_id, *account, batch.samples.front().seq);
+  }
   for (const auto& m : batch.samples) {
     account->account(m.seq);
     chunk.push_back(components::from_topic(m));

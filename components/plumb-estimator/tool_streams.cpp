@@ -31,6 +31,11 @@ std::size_t new_run_start(std::span<const Sample> chunk, std::optional<double> l
   return chunk.size();
 }
 
+void SequenceAccount::clock(double first_t, double last_t) {
+  if (latest_t && first_t < *latest_t) restart();
+  latest_t = last_t;
+}
+
 SequenceAccount* ToolStreams::route(const std::string& tool_id) {
   if (!selected_.empty() && tool_id != selected_) {
     ++other_tool_batches_;

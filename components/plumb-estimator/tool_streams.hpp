@@ -28,6 +28,11 @@ struct SequenceAccount {
   void account(std::uint64_t seq);
   // After a pause: the next sequence number is not expected to follow the last one.
   void restart() { paused = have_seq; }
+  // A batch's first and last sample times, before its sequence numbers are accounted. A clock that
+  // went back is a source started again (a second plumb-sim run, a replay from its start), as after
+  // a pause: its sequence starting over is no step back.
+  void clock(double first_t, double last_t);
+  std::optional<double> latest_t;
 };
 
 // Where a tool's chunk of samples starts a new run: the index of the first sample whose time is

@@ -55,14 +55,6 @@ StateMatrix ErrorStateFilter::sandwich(const StateMatrix& phi, const StateMatrix
   return out;
 }
 
-StateMatrix ErrorStateFilter::process_noise(const StateMatrix& phi, double dt, const ProcessNoise& n) {
-  const StateVector q = white_noise(dt, n);
-  StateMatrix qd = sandwich(phi, StateMatrix(q.asDiagonal()));
-  qd.diagonal() += q;
-  qd *= 0.5;
-  return 0.5 * (qd + qd.transpose());
-}
-
 StateMatrix ErrorStateFilter::predicted_covariance(const StateMatrix& phi, const StateMatrix& p, double dt,
                                                    const ProcessNoise& noise) {
   const StateVector half_q = 0.5 * white_noise(dt, noise);

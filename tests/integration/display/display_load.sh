@@ -40,8 +40,10 @@ rate=300
 "$bin/plumb" topic pub plumb/attitude/load tool_id=rig9 estimator=load inclination_deg=1.5 azimuth_deg=33 flags=7 \
   --transport "$t" --rate $rate --count 6000 > "$work/pub.log" 2>&1 &
 pids+=($!)
-wait_for "$work/pub.log" "." 1 || true
-sleep 2  # discovery of the new topic by the display (it looks twice a second)
+# Ready when the display takes the new topic's estimates (it discovers topics twice a second).
+taken() { python3 -c "import json, urllib.request; print(json.load(urllib.request.urlopen('http://127.0.0.1:$port/stats.json'))['attitudes'])"; }
+for ((i = 0; i < 150; ++i)); do [ "$(taken 2>/dev/null || echo 0)" -gt 0 ] && break; sleep 0.1; done
+[ "$(taken)" -gt 0 ] && pass "the display takes the published estimates" || fail "no estimate reached the display in 15 s"
 python3 "$here/ws_clients.py" "127.0.0.1:$port" "$display" --clients 20 --slow 4 --seconds 8 --publish-rate $rate &&
   pass "20 browsers at once" || fail "20 browsers at once"
 kill -0 "$display" 2>/dev/null && pass "plumb-display still running" || fail "plumb-display died"

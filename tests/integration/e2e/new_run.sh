@@ -34,4 +34,7 @@ sys.exit(0 if got == [(3.0, 100.0)] * 4 + [(7.0, 200.0)] * 4 else 1)
 PY
 output_matches "time went back from 3.99 s to 0 s: a new run" cat "$work/host.out" &&
   pass "the host says it started a new run" || fail "host log: $(cat "$work/host.out")"
+output_matches "restarted its sequence (now 0, was 399): a new source" cat "$work/host.out" &&
+  output_matches "0 lost in transit" cat "$work/host.out" &&
+  pass "the sequence starting over is a new source, not a loss" || fail "host log: $(cat "$work/host.out")"
 finish

@@ -22,8 +22,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../multihost/netns.sh"
 work=$(mktemp -d)
 pids=()
-cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; netns_cleanup; rm -rf "$work"; }
-trap cleanup EXIT
+trap netns_exit_cleanup EXIT
 show_logs() { for f in "$work"/*.log; do echo "--- $f"; tail -n 15 "$f"; done; }
 netns_chain 10.240.0 || { rc=$?; [ $rc -eq 77 ] && exit 77; fail "netns setup"; finish; }
 now() { date +%s.%N; }

@@ -8,6 +8,7 @@
 #                       $surface_if (SUBNET.2); nothing passes until a relay in $middle (the fault
 #                       tests' plumb-test-linkem) forwards frames between $mid_tool_if and $mid_surface_if
 #   netns_cleanup       stops what runs in them and deletes them (call it from the EXIT trap)
+#   netns_exit_cleanup  the whole EXIT trap with lib.sh: the test's own programs, the namespaces, $work
 netns_pair() {
   local subnet=$1
   if ! ip netns add plumb-probe-$$ 2>/dev/null; then
@@ -59,6 +60,9 @@ netns_chain() {
   ip -n "$tool" neigh replace "$subnet.2" lladdr "$surface_mac" dev "$tool_if" nud permanent
   ip -n "$surface" neigh replace "$subnet.1" lladdr "$tool_mac" dev "$surface_if" nud permanent
 }
+# The EXIT trap of a test on namespaces that keeps its programs in `pids` and its files in `$work`
+# (lib.sh): stops them, deletes the namespaces (and what still runs in them), removes the folder.
+netns_exit_cleanup() { stop_programs_and_remove_work; netns_cleanup; }
 netns_cleanup() {
   local ns
   for ns in "${tool:-}" "${surface:-}" "${middle:-}"; do

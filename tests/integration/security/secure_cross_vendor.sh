@@ -23,8 +23,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../multihost/netns.sh"
 work=$(mktemp -d)
 pids=()
-cleanup() { stop_programs_and_remove_work; netns_cleanup; }
-trap cleanup EXIT
+trap netns_exit_cleanup EXIT
 netns_pair 10.241.$domain || { rc=$?; [ $rc -eq 77 ] && exit 77; fail "netns setup"; finish; }
 export PLUMB_DOMAIN_ID=$domain
 ks=$work/ks

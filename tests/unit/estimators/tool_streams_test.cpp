@@ -85,6 +85,22 @@ TEST(ToolStreams, PauseBeforeTheFirstSampleIsNoGap) {
   EXPECT_EQ(streams.lost(), 0u);
 }
 
+// A source started again while the stream flows (no pause between the runs): its clock goes back,
+// and its sequence starting over is a source restart, not a step back.
+TEST(ToolStreams, ClockGoingBackIsASourceRestart) {
+  ToolStreams streams;
+  SequenceAccount& a = *streams.route("A");
+  a.clock(0.0, 0.09);
+  feed(streams, "A", 0, 10);
+  a.clock(0.1, 0.19);
+  feed(streams, "A", 10, 10);
+  a.clock(0.0, 0.09);  // the second run
+  feed(streams, "A", 0, 10);
+  EXPECT_EQ(streams.source_restarts(), 1u);
+  EXPECT_EQ(streams.backwards(), 0u);
+  EXPECT_EQ(streams.lost(), 0u);
+}
+
 // A source started again restarts its clock: the chunk is cut where time goes back, against the
 // tool's last sample before the chunk too; equal times are not a new run.
 TEST(ToolStreams, NewRunStartsWhereTimeGoesBack) {

@@ -156,7 +156,14 @@ TEST(ErrorStateFilterAlgebra, StructuredProductsEqualThePlainOnes) {
   noise.accel_vrw = 2e-3;
   noise.gyro_bias_walk = 1e-6;
   noise.accel_bias_walk = 1e-5;
-  const StateMatrix predicted = plain + ErrorStateFilter::process_noise(phi, step.dt, noise);
+  // The trapezoidal process noise written out: (phi Q phi' + Q) / 2, Q the white noises over dt.
+  StateVector q = StateVector::Zero();
+  q.segment<3>(0).setConstant(noise.gyro_arw * noise.gyro_arw * step.dt);
+  q.segment<3>(3).setConstant(noise.accel_vrw * noise.accel_vrw * step.dt);
+  q.segment<3>(9).setConstant(noise.gyro_bias_walk * noise.gyro_bias_walk * step.dt);
+  q.segment<3>(12).setConstant(noise.accel_bias_walk * noise.accel_bias_walk * step.dt);
+  const StateMatrix big_q = q.asDiagonal();
+  const StateMatrix predicted = plain + 0.5 * (phi * big_q * phi.transpose() + big_q);
   EXPECT_LT((ErrorStateFilter::predicted_covariance(phi, p, step.dt, noise) - predicted).norm(), 1e-12 * predicted.norm());
 
   ErrorStateFilter kf;

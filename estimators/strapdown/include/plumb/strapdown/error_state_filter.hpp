@@ -50,10 +50,9 @@ class ErrorStateFilter {
   // direction in the tool frame at alignment), an error the accelerometer-bias states carry.
   static StateMatrix transition(const StepIntegrals& integrals, const Eigen::Vector3d& w_ie,
                                 const Eigen::Vector3d& gravity_coupling = Eigen::Vector3d::Zero());
-  // Discrete process noise for that transition (trapezoidal in time): (phi Q phi' + Q) / 2, with
-  // Q = diag(q) the white noises over dt.
-  static StateMatrix process_noise(const StateMatrix& phi, double dt, const ProcessNoise& noise);
-  // phi p phi' + process_noise(phi, dt, noise), as phi (p + Q/2) phi' + Q/2: one sandwich, not two.
+  // The covariance predicted over a transition: phi p phi' plus the discrete process noise,
+  // trapezoidal in time, (phi Q phi' + Q) / 2 with Q = diag(q) the white noises over dt; computed
+  // as phi (p + Q/2) phi' + Q/2: one sandwich, not two.
   static StateMatrix predicted_covariance(const StateMatrix& phi, const StateMatrix& p, double dt,
                                           const ProcessNoise& noise);
   // phi m phi' for a transition() matrix: its bias rows (9-14) are those of the identity, so only
