@@ -18,6 +18,7 @@ namespace {
 struct StatusOptions {
   components::TransportOptions transport;
   double wait_s = 3;  // two status periods and discovery
+  bool counters = false;
 };
 
 struct Seen {
@@ -34,6 +35,25 @@ std::string nothing_seen(const transport::ParticipantOptions& p, const std::stri
          "two (it must pass multicast and UDP ports "
       << 7400 + 250 * p.domain_id << " and up), and that its components are running";
   return out.str();
+}
+
+// Under the component's row, indented, as many name=value pairs per line as fit 100 columns: what a
+// field engineer reads to see where samples went (lost, refused, repeated) without a topic echo.
+void print_counters(const topics::ComponentStatus& status) {
+  if (status.counters.empty()) {
+    std::cout << "    (no counters)\n";
+    return;
+  }
+  std::string line = "   ";
+  for (const auto& c : status.counters) {
+    const std::string pair = " " + c.name + "=" + std::to_string(c.value);
+    if (line.size() + pair.size() > 100) {
+      std::cout << line << '\n';
+      line = "   ";
+    }
+    line += pair;
+  }
+  std::cout << line << '\n';
 }
 
 int run_status(const StatusOptions& o) {
@@ -63,6 +83,7 @@ int run_status(const StatusOptions& o) {
   for (const auto& [key, s] : seen) {
     std::cout << std::setw(20) << key.first << std::setw(22) << key.second << std::setw(10) << s.last.state
               << std::setw(9) << s.messages << (s.last.last_error.empty() ? "-" : s.last.last_error) << '\n';
+    if (o.counters) print_counters(s.last);
     healthy = healthy && s.last.state != "degraded" && s.last.state != "failed";
   }
   std::cout << seen.size() << " component(s) on domain " << conn.options.domain_id << std::endl;
@@ -78,6 +99,7 @@ void add_status_command(CLI::App& app) {
   auto o = std::make_shared<StatusOptions>();
   components::add_transport_options(*status, o->transport);
   status->add_option("--wait", o->wait_s, "seconds to listen")->capture_default_str()->check(CLI::PositiveNumber);
+  status->add_flag("--counters", o->counters, "also print each component's counters (from its latest report)");
   status->callback([o] { g_exit_code = run_status(*o); });
 }
 

@@ -90,6 +90,12 @@ if output_matches "$(hostname) *plumb-estimator *running" run plumb status --wai
 else
   fail "plumb status: $(run plumb status --wait 3 --transport "$sim_t" 2>&1)"
 fi
+# --counters: the host's counters under its row, from its latest report.
+if output_matches "^ .*samples=0 .*lost_samples=0" run plumb status --counters --wait 3 --transport "$sim_t"; then
+  pass "plumb status --counters prints the host's counters"
+else
+  fail "plumb status --counters: $(run plumb status --counters --wait 3 --transport "$sim_t" 2>&1)"
+fi
 run plumb-sim --transport "$sim_t" --inclination 1 --azimuth 45 --rpm 60 --duration 15.5 --snr-accel 40 --snr-mag 40 \
   --rate x4 --reliable --wait-subscribers 30 > "$work/sim.log" 2>&1 || fail "plumb-sim from the prefix: $(cat "$work/sim.log")"
 wait $host_pid && pass "plumb-estimator from the prefix estimated" || fail "plumb-estimator: $(cat "$work/host.log")"
