@@ -60,6 +60,9 @@ field_has "plumb-surface depends on plumb-common and a transport" plumb-surface 
   "plumb-common \(= [0-9.]+\).*plumb-transport-(cyclonedds|fastdds)"
 field_has "plumb-common depends on the C++ runtime" plumb-common "libstdc\+\+6"
 if depends plumb-common | grep -qE "libddsc|libfastrtps"; then fail "plumb-common depends on a DDS vendor"; fi
+recommends=$(dpkg-deb -f "$(deb plumb-common)" Recommends)
+grep -qE "(^|, )openssl( |,|$)" <<< "$recommends" && pass "plumb-common recommends openssl (plumb security create-*)" ||
+  fail "plumb-common Recommends: $recommends"
 
 # The tool computer: plumb-tool and the plumb packages it depends on (first alternative, as apt
 # picks), unpacked into an empty root; nothing from the build tree.
