@@ -6,6 +6,8 @@ fail() { echo "FAIL - $*"; fails=$((fails + 1)); }
 # works in the folder `$work`: stops what still runs, removes the folder. kill fails for a program
 # that has already ended, as it should; that failure is ignored because it says nothing about the test.
 stop_programs_and_remove_work() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; rm -rf "$work"; }
+# A test that starts programs: the scratch folder `$work`, the empty array `pids`, and that EXIT trap.
+start_work_with_programs() { work=$(mktemp -d); pids=(); trap stop_programs_and_remove_work EXIT; }
 # output_matches "pattern" command...: the command's output (stdout and stderr) matches. The output
 # is captured first: `cmd | grep -q` under pipefail fails at random, because grep quits at the first
 # match and a long writer (any --help) then dies of SIGPIPE.

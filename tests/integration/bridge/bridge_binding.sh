@@ -12,9 +12,7 @@ export PLUMB_DOMAIN_ID=$4
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
 source "$here/../wait.sh"
-work=$(mktemp -d)
-pids=()
-trap stop_programs_and_remove_work EXIT
+start_work_with_programs
 show_logs() { for f in "$work"/*.out; do echo "--- $f"; tail -20 "$f"; done; }
 cd "$work"
 

@@ -16,9 +16,7 @@ if ! command -v chromium > /dev/null && ! command -v chromium-browser > /dev/nul
   echo "skipped: chromium is not installed (apt-get install chromium)"
   exit 77
 fi
-work=$(mktemp -d)
-pids=()
-trap stop_programs_and_remove_work EXIT
+start_work_with_programs
 mkdir -p "$artifacts"
 
 start_display() {  # start_display PORT LOG: background plumb-display; its pid in $display

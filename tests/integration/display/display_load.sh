@@ -9,9 +9,7 @@ export PLUMB_DOMAIN_ID=$3
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../lib.sh"
 . "$here/../wait.sh"
-work=$(mktemp -d)
-pids=()
-trap stop_programs_and_remove_work EXIT
+start_work_with_programs
 
 output_matches "0.0.0.0 exposes the page" "$bin/plumb-display" --help && pass "--help says what --bind 0.0.0.0 does" ||
   fail "--help lacks the --bind warning"

@@ -7,9 +7,7 @@ bin=$1 t=$2
 export PLUMB_DOMAIN_ID=$3
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
-work=$(mktemp -d)
-pids=()
-trap stop_programs_and_remove_work EXIT
+start_work_with_programs
 
 "$bin/plumb" topic echo plumb/attitude/compensated --csv --count 8 --timeout 60 --transport "$t" \
   > "$work/att.csv" 2> "$work/echo.err" &

@@ -9,9 +9,7 @@ bin=$1 sim_t=$2 host_t=$3
 export PLUMB_DOMAIN_ID=$4
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
-work=$(mktemp -d)
-pids=()
-trap stop_programs_and_remove_work EXIT
+start_work_with_programs
 show_logs() { for f in "$work"/*.out; do echo "--- $f"; cat "$f"; done; }
 cd "$work"
 

@@ -16,9 +16,7 @@ export PLUMB_TRANSPORT=$2 PLUMB_DOMAIN_ID=$3
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../lib.sh"
 . "$here/../wait.sh"
-work=$(mktemp -d)
-pids=()
-trap stop_programs_and_remove_work EXIT
+start_work_with_programs
 cd "$work"
 show_logs() { for f in "$work"/*.log; do echo "--- $f"; tail -n 12 "$f"; done; }
 now() { date +%s.%N; }

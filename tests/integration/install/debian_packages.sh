@@ -11,9 +11,7 @@ export PLUMB_DOMAIN_ID=$2
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../lib.sh"
 . "$here/../wait.sh"
-work=$(mktemp -d)
-pids=()
-trap stop_programs_and_remove_work EXIT
+start_work_with_programs
 command -v dpkg-deb > /dev/null || { echo "dpkg-deb not found: skipped"; exit 77; }
 
 start=$(date +%s)

@@ -9,9 +9,7 @@ build=$1 sim_t=$2 host_t=$3
 export PLUMB_DOMAIN_ID=$4
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../lib.sh"
-work=$(mktemp -d)
-pids=()
-trap stop_programs_and_remove_work EXIT
+start_work_with_programs
 
 cmake --install "$build" --prefix "$work/first" > "$work/install.log" 2>&1 || { cat "$work/install.log"; fail "cmake --install"; finish; }
 mv "$work/first" "$work/moved"

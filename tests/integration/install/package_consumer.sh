@@ -9,9 +9,7 @@ export PLUMB_DOMAIN_ID=$3
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../lib.sh"
 . "$here/../wait.sh"
-work=$(mktemp -d)
-pids=()
-trap stop_programs_and_remove_work EXIT
+start_work_with_programs
 prefix=$work/prefix
 cmake --install "$build" --prefix "$prefix" > "$work/install.log" 2>&1 || { cat "$work/install.log"; fail "cmake --install"; finish; }
 

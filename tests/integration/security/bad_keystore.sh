@@ -9,9 +9,7 @@ bin=$1 transport=$2
 export PLUMB_DOMAIN_ID=$3 PLUMB_TRANSPORT=$2
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../lib.sh"
-work=$(mktemp -d)
-pids=()
-trap stop_programs_and_remove_work EXIT
+start_work_with_programs
 ks=$work/ks
 "$bin/plumb" security create-keystore "$ks" --domains 10-19 > /dev/null || { fail "create-keystore"; finish; }
 "$bin/plumb" security create-keystore "$work/other" --domains 10-19 > /dev/null || { fail "create-keystore other"; finish; }

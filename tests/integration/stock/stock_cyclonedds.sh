@@ -11,9 +11,7 @@ export PLUMB_DOMAIN_ID=$3
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../lib.sh"
 . "$here/../wait.sh"
-work=$(mktemp -d)
-pids=()
-trap stop_programs_and_remove_work EXIT
+start_work_with_programs
 stock=$bin/plumb-test-cyclone-stock
 stock_env=(env CYCLONEDDS_URI="file://$src/transports/config/cyclonedds-loopback.xml")
 

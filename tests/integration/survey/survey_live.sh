@@ -13,9 +13,7 @@ export PLUMB_DOMAIN_ID=$5
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
 source "$here/../wait.sh"
-work=$(mktemp -d)
-pids=()
-trap stop_programs_and_remove_work EXIT
+start_work_with_programs
 tool=drilling-survey
 survey_args=(--transport "$survey_t" --tool-id "$tool" --file "$work/survey.csv" --plugin static
              --gravity 9.80665 --total-field 50 --dip 60)

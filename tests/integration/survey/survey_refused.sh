@@ -10,9 +10,7 @@ export PLUMB_TRANSPORT=$2 PLUMB_DOMAIN_ID=$3
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
 source "$here/../wait.sh"
-work=$(mktemp -d)
-pids=()
-trap stop_programs_and_remove_work EXIT
+start_work_with_programs
 
 "$bin/plumb-survey" --tool-id t1 --file "$work/survey.csv" --gravity 9.80665 --total-field 50 --dip 60 \
   > "$work/out" 2> "$work/err" &
