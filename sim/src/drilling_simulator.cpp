@@ -11,11 +11,10 @@
 #include "plumb/core/attitude.hpp"
 #include "plumb/sim/drilling.hpp"
 #include "plumb/sim/run_all.hpp"
+#include "truth_of_state.hpp"
 
 namespace plumb::sim {
 namespace {
-
-constexpr double kRadPerSToRpm = 60.0 / (2.0 * kPi);
 
 // Separate streams per purpose so that adding vibration or changing a bias does not change the
 // noise sequence of the others.
@@ -92,21 +91,7 @@ Sample DrillingSimulator::next(TruthSample* truth) {
     out.depth_m = depth;
     out.flags |= flags::kHasDepth;
   }
-  if (truth) {
-    truth->t = t;
-    truth->inclination_deg = st.inclination / kDeg;
-    truth->azimuth_deg = wrap_deg_360(st.azimuth / kDeg);
-    truth->toolface_deg = wrap_deg_360(st.toolface / kDeg);
-    truth->rpm = st.toolface_rate * kRadPerSToRpm;
-    truth->has_position = true;
-    truth->north_m = st.position.x();
-    truth->east_m = st.position.y();
-    truth->down_m = st.position.z();
-    truth->vn_mps = st.velocity.x();
-    truth->ve_mps = st.velocity.y();
-    truth->vd_mps = st.velocity.z();
-    truth->depth_m = st.depth_m;
-  }
+  if (truth) fill_truth(st, t, st.depth_m, *truth);
   ++index_;
   return out;
 }

@@ -7,15 +7,10 @@
 
 #include "plumb/core/attitude.hpp"
 #include "plumb/sim/run_all.hpp"
+#include "truth_of_state.hpp"
 #include "walk_detail.hpp"
 
 namespace plumb::sim {
-namespace {
-
-constexpr double kRadPerSToRpm = 60.0 / (2.0 * kPi);
-
-}  // namespace
-
 WalkSimulator::WalkSimulator(const WalkScenario& scenario)
     : scenario_(scenario),
       path_(scenario),
@@ -49,21 +44,7 @@ Sample WalkSimulator::next(TruthSample* truth) {
   out.t = t;
   imu_.measure(st.w_nb, st.c_nb, st.acceleration, st.velocity, scenario_.g, Eigen::Vector3d::Zero(), n_w, n_a, out);
   if (scenario_.magnetometer) out.b = st.c_nb * field_ned_ + scenario_.mag_sigma_uT * n_m;
-  if (truth) {
-    truth->t = t;
-    truth->inclination_deg = st.inclination / kDeg;
-    truth->azimuth_deg = wrap_deg_360(st.azimuth / kDeg);
-    truth->toolface_deg = wrap_deg_360(st.toolface / kDeg);
-    truth->rpm = st.toolface_rate * kRadPerSToRpm;
-    truth->has_position = true;
-    truth->north_m = st.position.x();
-    truth->east_m = st.position.y();
-    truth->down_m = st.position.z();
-    truth->vn_mps = st.velocity.x();
-    truth->ve_mps = st.velocity.y();
-    truth->vd_mps = st.velocity.z();
-    truth->depth_m = 0;
-  }
+  if (truth) fill_truth(st, t, 0, *truth);
   ++index_;
   return out;
 }
