@@ -14,13 +14,14 @@ constexpr double kGauss2 = 0.5 + std::numbers::sqrt3 / 6.0;
 constexpr double kConing = std::numbers::sqrt3 / 12.0;
 
 // The quaternion of a rotation vector: below 0.1 rad by the series of cos(x/2) and sin(x/2)/x to
-// x^8 (the next terms are below 3e-20), which needs no square root and no trigonometry.
-Eigen::Quaterniond rotation_quaternion(const Eigen::Vector3d& phi) {
+// x^8 (the next terms are below 3e-20), which needs no square root, no trigonometry and (the
+// coefficients as reciprocals) no division.
+inline Eigen::Quaterniond rotation_quaternion(const Eigen::Vector3d& phi) {
   const double t2 = phi.squaredNorm();
   double c = 0, s = 0;  // cos(|phi|/2), sin(|phi|/2)/|phi|
   if (t2 < 1e-2) {
-    c = 1.0 - t2 / 8.0 * (1.0 - t2 / 48.0 * (1.0 - t2 / 120.0 * (1.0 - t2 / 224.0)));
-    s = 0.5 * (1.0 - t2 / 24.0 * (1.0 - t2 / 80.0 * (1.0 - t2 / 168.0 * (1.0 - t2 / 288.0))));
+    c = 1.0 - t2 * (1.0 / 8.0) * (1.0 - t2 * (1.0 / 48.0) * (1.0 - t2 * (1.0 / 120.0) * (1.0 - t2 * (1.0 / 224.0))));
+    s = 0.5 * (1.0 - t2 * (1.0 / 24.0) * (1.0 - t2 * (1.0 / 80.0) * (1.0 - t2 * (1.0 / 168.0) * (1.0 - t2 * (1.0 / 288.0)))));
   } else {
     const double x = std::sqrt(t2);
     c = std::cos(0.5 * x);
@@ -39,6 +40,7 @@ void Mechanization::begin(const NavState& state) {
   w_b0_ = c0_.transpose() * w_ie_;
   v_b0_ = c0_.transpose() * state.v;
   g_b0_ = c0_.transpose() * g_n_;
+  earth_dt_ = 0;
   b_ = Eigen::Quaterniond::Identity();
   c_.setIdentity();
   tau_ = tau_sum_ = 0;
@@ -85,7 +87,12 @@ void Mechanization::step(const ImuReading& a, const ImuReading& b, const ImuRead
     const Eigen::Quaterniond dq = rotation_quaternion(0.5 * h * (w1 + w2) + (kConing * h * h) * w1.cross(w2));
     d = substeps == 1 ? dq : d * dq;
   }
-  b_ = rotation_quaternion(-dt * w_b0_) * b_ * d;
+  // The earth's turn of b0 over dt, kept while the steps are alike (it changes only with dt and b0).
+  if (dt != earth_dt_) {
+    earth_dt_ = dt;
+    earth_turn_ = rotation_quaternion(-dt * w_b0_);
+  }
+  b_ = earth_turn_ * b_ * d;
   const Eigen::Matrix3d c1 = b_.toRotationMatrix();
 
   // At reading a: the velocity in b0 (less Coriolis, which the full update adds), and the

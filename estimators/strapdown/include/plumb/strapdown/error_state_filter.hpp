@@ -44,10 +44,14 @@ class ErrorStateFilter {
   const StateMatrix& covariance() const { return p_; }
   StateMatrix& covariance() { return p_; }
 
-  // Transition matrix over an epoch from the integrals the mechanization gathered (means over the
-  // epoch stand in for the time-varying F), to second order in F dt.
+  // The continuous dynamics F over an epoch from the integrals the mechanization gathered (means
+  // over the epoch stand in for the time-varying F).
   // gravity_coupling: when g was learnt from the alignment's |f| it is wrong by u' dba (u: the down
   // direction in the tool frame at alignment), an error the accelerometer-bias states carry.
+  static StateMatrix dynamics(const StepIntegrals& integrals, const Eigen::Vector3d& w_ie,
+                              const Eigen::Vector3d& gravity_coupling = Eigen::Vector3d::Zero());
+  // Transition matrix over the epoch, I + F dt + (F dt)^2 / 2 with F = dynamics(), written block by
+  // block (the same matrix; its zero blocks stay exactly zero, which sandwich() relies on).
   static StateMatrix transition(const StepIntegrals& integrals, const Eigen::Vector3d& w_ie,
                                 const Eigen::Vector3d& gravity_coupling = Eigen::Vector3d::Zero());
   // The covariance predicted over a transition: phi p phi' plus the discrete process noise,
@@ -55,8 +59,8 @@ class ErrorStateFilter {
   // as phi (p + Q/2) phi' + Q/2: one sandwich, not two.
   static StateMatrix predicted_covariance(const StateMatrix& phi, const StateMatrix& p, double dt,
                                           const ProcessNoise& noise);
-  // phi m phi' for a transition() matrix: its bias rows (9-14) are those of the identity, so only
-  // ten rows and ten columns take a product (a third less work than the full 16 x 16 ones).
+  // phi m phi' for a transition() matrix (or the identity): its bias rows (9-14) are those of the
+  // identity and most of its other 3 x 3 blocks are zero, so only the non-zero blocks take a product.
   static StateMatrix sandwich(const StateMatrix& phi, const StateMatrix& m);
   void predict(const StateMatrix& phi, double dt, const ProcessNoise& noise);
 
@@ -73,7 +77,8 @@ class ErrorStateFilter {
     if (nis != nullptr) *nis = r.dot(s_inv * r);
     // Joseph form (I-KH) P (I-KH)' + K R K', multiplied out: P - K(HP) - (K(HP))' + K S K'. The
     // same matrix for any gain K, at 16 x 16 x M products instead of 16 x 16 x 16 ones.
-    const StateMatrix khp = (k * pht.transpose()).eval();
+    // lazyProduct: a 16 x M x 16 product is too small for the blocked matrix product Eigen picks.
+    const StateMatrix khp = k.lazyProduct(pht.transpose());
     p_ += (k * s).lazyProduct(k.transpose()) - khp - khp.transpose();
     symmetrize();
     return k * r;

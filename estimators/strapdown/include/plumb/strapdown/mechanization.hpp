@@ -110,6 +110,9 @@ class Mechanization {
   // Of the last reading (valid after the first step since begin()): C~ f, and axis x velocity in b0.
   Eigen::Vector3d last_f_ = Eigen::Vector3d::Zero(), last_axis_cross_v_ = Eigen::Vector3d::Zero();
   bool stepped_ = false;
+  // The earth's turn of b0 over the last step's dt (0: none yet since begin()).
+  double earth_dt_ = 0;
+  Eigen::Quaterniond earth_turn_ = Eigen::Quaterniond::Identity();
 };
 
 }  // namespace plumb::strapdown
