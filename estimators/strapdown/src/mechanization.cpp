@@ -65,27 +65,30 @@ void Mechanization::step(const ImuReading& a, const ImuReading& b, const ImuRead
   const double inv_d0 = parabola ? 1.0 / (previous_dt * (previous_dt + dt)) : 0.0;
   const double inv_d1 = parabola ? -1.0 / (previous_dt * dt) : 0.0;
   const double inv_d2 = parabola ? 1.0 / ((previous_dt + dt) * dt) : 0.0;
+  const Eigen::Vector3d& w_before = parabola ? before->w : a.w;
   auto rate = [&](double u) -> Eigen::Vector3d {
     if (!parabola) return a.w + (b.w - a.w) * u;
     const double s = u * dt;
-    return (s * (s - dt) * inv_d0) * before->w + ((s + previous_dt) * (s - dt) * inv_d1) * a.w +
+    return (s * (s - dt) * inv_d0) * w_before + ((s + previous_dt) * (s - dt) * inv_d1) * a.w +
            ((s + previous_dt) * s * inv_d2) * b.w;
   };
 
   // Attitude: the Magnus step (rates at the Gauss points, the cross product the coning correction)
   // in as many sub-steps as the turn needs; the earth's rotation of b0 on the other side.
   const double turn2 = std::max(a.w.squaredNorm(), b.w.squaredNorm()) * dt * dt;
-  int substeps = 1;
-  if (turn2 > kMaxSubstepAngle * kMaxSubstepAngle) {
-    substeps = std::clamp(static_cast<int>(std::ceil(std::sqrt(turn2) / kMaxSubstepAngle)), 1, 4096);
-  }
-  const double h = dt / substeps;
-  Eigen::Quaterniond d = Eigen::Quaterniond::Identity();
-  for (int i = 0; i < substeps; ++i) {
-    const Eigen::Vector3d w1 = rate((i + kGauss1) / substeps);
-    const Eigen::Vector3d w2 = rate((i + kGauss2) / substeps);
-    const Eigen::Quaterniond dq = rotation_quaternion(0.5 * h * (w1 + w2) + (kConing * h * h) * w1.cross(w2));
-    d = substeps == 1 ? dq : d * dq;
+  Eigen::Quaterniond d;
+  if (turn2 <= kMaxSubstepAngle * kMaxSubstepAngle) {
+    const Eigen::Vector3d w1 = rate(kGauss1), w2 = rate(kGauss2);
+    d = rotation_quaternion(0.5 * dt * (w1 + w2) + (kConing * dt * dt) * w1.cross(w2));
+  } else {
+    const int substeps = std::clamp(static_cast<int>(std::ceil(std::sqrt(turn2) / kMaxSubstepAngle)), 1, 4096);
+    const double h = dt / substeps;
+    d = Eigen::Quaterniond::Identity();
+    for (int i = 0; i < substeps; ++i) {
+      const Eigen::Vector3d w1 = rate((i + kGauss1) / substeps);
+      const Eigen::Vector3d w2 = rate((i + kGauss2) / substeps);
+      d = d * rotation_quaternion(0.5 * h * (w1 + w2) + (kConing * h * h) * w1.cross(w2));
+    }
   }
   // The earth's turn of b0 over dt, kept while the steps are alike (it changes only with dt and b0).
   if (dt != earth_dt_) {
@@ -98,14 +101,15 @@ void Mechanization::step(const ImuReading& a, const ImuReading& b, const ImuRead
   // At reading a: the velocity in b0 (less Coriolis, which the full update adds), and the
   // first-order sums of position and distance.
   const Eigen::Vector3d va = v_b0_ + u_ + g_b0_ * tau_;
-  const Eigen::Vector3d fa = stepped_ ? last_f_ : Eigen::Vector3d(c_ * a.f);
+  // Before the first step since begin() C~ is the identity.
+  const Eigen::Vector3d& fa = stepped_ ? last_f_ : a.f;
   const Eigen::Vector3d axa = stepped_ ? last_axis_cross_v_ : Eigen::Vector3d(c_.col(2).cross(va));
   u_sum_ += dt * u_;
   tau_sum_ += dt * tau_;
   s_sum_ += dt * c_.col(2).dot(va);
 
   // Velocity: the trapezoid of C~ f (Heun's sum of the specific force); gravity at the full update.
-  const Eigen::Vector3d fb = c1 * b.f;
+  const Eigen::Vector3d fb = c1.lazyProduct(b.f);
   u_ += 0.5 * dt * (fa + fb);
   tau_ += dt;
   const Eigen::Vector3d axb = c1.col(2).cross(v_b0_ + u_ + g_b0_ * tau_);

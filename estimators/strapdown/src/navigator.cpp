@@ -76,6 +76,7 @@ void Navigator::reset() {
   use_mag_ = false;
   azimuth_reference_ = config_.declination ? "true" : "magnetic";
   aligned_ = false;
+  aligned_gyro_tol_ = 0;
   aligned_at_ = 0;
   x_ = NavState();
   bg_.setZero();
@@ -257,10 +258,7 @@ StillnessInput Navigator::detector_input(const Input& in) const {
   if (aligned_) {
     si.f = in.f - ba_;
     si.w_minus_expected = in.w - bg_ - mech_.earth_rate_in_tool();
-    const StateMatrix& p = kf_.covariance();
-    const double bias_sd = std::sqrt(p.block<3, 3>(kGyroBias, kGyroBias).diagonal().maxCoeff());
-    const double att_sd = std::sqrt(p.block<3, 3>(kAtt, kAtt).diagonal().maxCoeff());
-    si.extra_gyro_tol = 3.0 * bias_sd + 3.0 * std::min(att_sd, 1.0) * kEarthRate;
+    si.extra_gyro_tol = aligned_gyro_tol_;
     si.g = g_;
   } else {
     si.f = in.f;
@@ -272,6 +270,15 @@ StillnessInput Navigator::detector_input(const Input& in) const {
     si.field_deviation_uT = in.b->norm() - *b0_;
   }
   return si;
+}
+
+// What the detector does not know of w_expected once aligned: 3 sigma of the gyro bias estimate and
+// of the earth rate's projection. It changes with P only, at the filter's epochs.
+void Navigator::refresh_gyro_tolerance() {
+  const StateMatrix& p = kf_.covariance();
+  const double bias_sd = std::sqrt(p.block<3, 3>(kGyroBias, kGyroBias).diagonal().maxCoeff());
+  const double att_sd = std::sqrt(p.block<3, 3>(kAtt, kAtt).diagonal().maxCoeff());
+  aligned_gyro_tol_ = 3.0 * bias_sd + 3.0 * std::min(att_sd, 1.0) * kEarthRate;
 }
 
 void Navigator::refresh_noise(double dt) {
@@ -481,6 +488,7 @@ void Navigator::align(const Input& in) {
   }
   integrals_.clear();
   mech_.begin(x_);
+  refresh_gyro_tolerance();
   if (config_.smooth) {
     smoother_.store(StateMatrix::Identity(), 0.0, correction_, x_, bg_, ba_, kf_.covariance());
     correction_.setZero();
@@ -529,6 +537,7 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   }
   // The minor steps go on from the corrected state.
   mech_.begin(x_);
+  refresh_gyro_tolerance();
   if (config_.smooth) smoother_.store(phi, dt, correction_, x_, bg_, ba_, kf_.covariance());
   emit(in.t, out);
 }

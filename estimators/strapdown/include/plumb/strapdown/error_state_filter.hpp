@@ -69,18 +69,21 @@ class ErrorStateFilter {
   template <int M>
   StateVector update(const Eigen::Matrix<double, M, 1>& r, const Eigen::Matrix<double, M, kStates>& h,
                      const Eigen::Matrix<double, M, M>& noise, double* nis = nullptr) {
-    const Eigen::Matrix<double, kStates, M> pht = p_ * h.transpose();
-    const Eigen::Matrix<double, M, M> s = h * pht + noise;
+    // Every product here is lazy (coefficient by coefficient): with a 16-long side they are too
+    // small for the blocked matrix product Eigen would otherwise pick.
+    const Eigen::Matrix<double, kStates, M> pht = p_.lazyProduct(h.transpose());
+    const Eigen::Matrix<double, M, M> s = h.lazyProduct(pht) + noise;
     // M <= 3: the closed-form inverse of a small symmetric positive definite matrix.
     const Eigen::Matrix<double, M, M> s_inv = s.inverse();
-    const Eigen::Matrix<double, kStates, M> k = pht * s_inv;
+    const Eigen::Matrix<double, kStates, M> k = pht.lazyProduct(s_inv);
     if (nis != nullptr) *nis = r.dot(s_inv * r);
     // Joseph form (I-KH) P (I-KH)' + K R K', multiplied out: P - K(HP) - (K(HP))' + K S K'. The
-    // same matrix for any gain K, at 16 x 16 x M products instead of 16 x 16 x 16 ones.
-    // lazyProduct: a 16 x M x 16 product is too small for the blocked matrix product Eigen picks.
+    // same matrix for any gain K, at 16 x 16 x M products instead of 16 x 16 x 16 ones. P stays
+    // exactly symmetric in the same pass: K(HP) + (K(HP))' is, and K S K' is taken as the mean with
+    // its transpose (what symmetrize() did afterwards).
     const StateMatrix khp = k.lazyProduct(pht.transpose());
-    p_ += (k * s).lazyProduct(k.transpose()) - khp - khp.transpose();
-    symmetrize();
+    const StateMatrix ksk = k.lazyProduct(s).lazyProduct(k.transpose());
+    p_ += 0.5 * (ksk + ksk.transpose()) - (khp + khp.transpose());
     return k * r;
   }
 

@@ -79,7 +79,7 @@ class Mechanization {
             const ImuReading* before = nullptr);
 
   // The earth rate in the tool frame at the last reading, C_n^b w_ie (what a still gyro reads).
-  Eigen::Vector3d earth_rate_in_tool() const { return c_.transpose() * w_b0_; }
+  Eigen::Vector3d earth_rate_in_tool() const { return c_.transpose().lazyProduct(w_b0_); }
   const Eigen::Vector3d& earth_rate() const { return w_ie_; }
   double gravity() const { return g_n_.z(); }
   void set_gravity(double g) { g_n_.z() = g; }
