@@ -12,13 +12,16 @@
 // Attitude: each step's rotation vector by the 4th-order Magnus expansion, the rates at the two
 // Gauss points of the step, phi = h (w1 + w2) / 2 + sqrt(3) h^2 / 12 (w1 x w2), its second term the
 // coning correction; then composed as an exact quaternion product (the exponential by its series).
-// Local error O(h^5), global O(h^4), as the source's 4th-order Runge-Kutta, and exact for a rotation
-// about a fixed axis (where Runge-Kutta loses th^5 / 1920 per step). The rates are interpolated
-// across the step by the parabola through this reading, the previous one and the one before
-// (linearly when there is no earlier reading): gyros sampled as instantaneous values make a
-// straight line between samples wrong by dt^2 w''/8; at 10 Hz, when a 30 rpm rotation starts over
-// 5 s, linear interpolation puts the toolface 7e-4 rad (0.04 deg) off during the ramp, the parabola
-// 1e-5 rad. Large turns per step (120 rpm at 10 Hz: 1.26 rad) are split into sub-steps.
+// For given rates the step is 4th order, as the source's Runge-Kutta (which it replaced, at the
+// same accuracy or better: tests/unit/strapdown/mechanization_truth_test.cpp), and exact for a
+// rotation about a fixed axis such as the toolface spin (where Runge-Kutta loses th^5 / 1920 per
+// step). The rates are interpolated across the step by the parabola through this reading, the
+// previous one and the one before (linearly when there is no earlier reading): gyros sampled as
+// instantaneous values make a straight line between samples wrong by dt^2 w''/8; at 10 Hz, when a
+// 30 rpm rotation starts over 5 s, linear interpolation puts the toolface 7e-4 rad (0.04 deg) off
+// during the ramp, the parabola 1e-5 rad. That parabola looks back only (each reading is used as it
+// arrives, without waiting for the next), so a rate that curves leaves 3rd-order residuals (a foot's
+// swing). Large turns per step (120 rpm at 10 Hz: 1.26 rad) are split into sub-steps.
 // Velocity: the specific force integrated by the trapezoid over each step in b0 (2nd order, the
 // same sum as Heun's), gravity exactly, Coriolis over the epoch from the position change.
 // Position and along-hole distance: 1st order (Euler), as the source prescribes. Each step uses its
