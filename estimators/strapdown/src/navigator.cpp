@@ -76,6 +76,7 @@ void Navigator::reset() {
   use_mag_ = false;
   azimuth_reference_ = config_.declination ? "true" : "magnetic";
   aligned_ = false;
+  aligned_gyro_tol_ = 0;
   aligned_at_ = 0;
   x_ = NavState();
   bg_.setZero();
@@ -255,13 +256,9 @@ StillnessInput Navigator::detector_input(const Input& in) const {
   si.t = in.t;
   si.depth_m = in.depth;
   if (aligned_) {
-    const Eigen::Matrix3d c_nb = x_.q.toRotationMatrix().transpose();
     si.f = in.f - ba_;
-    si.w_minus_expected = in.w - bg_ - c_nb * mech_.earth_rate();
-    const StateMatrix& p = kf_.covariance();
-    const double bias_sd = std::sqrt(p.block<3, 3>(kGyroBias, kGyroBias).diagonal().maxCoeff());
-    const double att_sd = std::sqrt(p.block<3, 3>(kAtt, kAtt).diagonal().maxCoeff());
-    si.extra_gyro_tol = 3.0 * bias_sd + 3.0 * std::min(att_sd, 1.0) * kEarthRate;
+    si.w_minus_expected = in.w - bg_ - mech_.earth_rate_in_tool();
+    si.extra_gyro_tol = aligned_gyro_tol_;
     si.g = g_;
   } else {
     si.f = in.f;
@@ -273,6 +270,15 @@ StillnessInput Navigator::detector_input(const Input& in) const {
     si.field_deviation_uT = in.b->norm() - *b0_;
   }
   return si;
+}
+
+// What the detector does not know of w_expected once aligned: 3 sigma of the gyro bias estimate and
+// of the earth rate's projection. It changes with P only, at the filter's epochs.
+void Navigator::refresh_gyro_tolerance() {
+  const StateMatrix& p = kf_.covariance();
+  const double bias_sd = std::sqrt(p.block<3, 3>(kGyroBias, kGyroBias).diagonal().maxCoeff());
+  const double att_sd = std::sqrt(p.block<3, 3>(kAtt, kAtt).diagonal().maxCoeff());
+  aligned_gyro_tol_ = 3.0 * bias_sd + 3.0 * std::min(att_sd, 1.0) * kEarthRate;
 }
 
 void Navigator::refresh_noise(double dt) {
@@ -298,16 +304,16 @@ void Navigator::process(const Input& in, std::vector<Estimate>& out) {
   const ImuReading b{in.t, in.f - ba_, in.w - bg_};
   if (prev2_) {
     const ImuReading before{prev2_->t, prev2_->f - ba_, prev2_->w - bg_};
-    mech_.step(x_, a, b, &integrals_, &before);
+    mech_.step(a, b, &before);
   } else {
-    mech_.step(x_, a, b, &integrals_);
+    mech_.step(a, b);
   }
   if (in.depth) {
     latest_depth_ = in.depth;
     if (!have_depth0_) {
       // The first depth after alignment: the distance counts from the one at alignment, so this
       // reading is referred back by the distance travelled since then.
-      depth0_ = *in.depth - x_.s;
+      depth0_ = *in.depth - mech_.state().s;
       have_depth0_ = true;
     }
   }
@@ -481,6 +487,8 @@ void Navigator::align(const Input& in) {
     have_depth0_ = true;
   }
   integrals_.clear();
+  mech_.begin(x_);
+  refresh_gyro_tolerance();
   if (config_.smooth) {
     smoother_.store(StateMatrix::Identity(), 0.0, correction_, x_, bg_, ba_, kf_.covariance());
     correction_.setZero();
@@ -499,6 +507,8 @@ void Navigator::apply(const StateVector& dx) {
 double Navigator::field_azimuth() const { return config_.declination.value_or(0.0); }
 
 void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
+  // The full update of the two-rate mechanization, then the filter at the same instant.
+  mech_.finish(x_, &integrals_);
   const StateMatrix phi = ErrorStateFilter::transition(integrals_, mech_.earth_rate(), gravity_coupling_);
   const double dt = integrals_.dt;
   kf_.predict(phi, dt, noise_);
@@ -525,6 +535,9 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
     count("depth_updates");
     last_depth_update_t_ = in.t;
   }
+  // The minor steps go on from the corrected state.
+  mech_.begin(x_);
+  refresh_gyro_tolerance();
   if (config_.smooth) smoother_.store(phi, dt, correction_, x_, bg_, ba_, kf_.covariance());
   emit(in.t, out);
 }

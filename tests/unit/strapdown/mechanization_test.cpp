@@ -134,9 +134,10 @@ TEST(ErrorStateFilter, AttitudeVarianceGrowsAsGyroModelSays) {
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(kf.covariance()(i, i), expected, 0.01 * expected);
 }
 
-// The structured products of the filter equal the plain ones they replace: the transition's
-// bias rows are the identity's, so phi M phi' needs ten rows and columns; the multiplied-out
-// Joseph form equals (I-KH) P (I-KH)' + K R K'.
+// The structured products of the filter equal the plain ones they replace: the transition
+// written block by block is I + F dt + (F dt)^2 / 2; its bias rows are the identity's and most of
+// its blocks zero, so phi M phi' takes only the non-zero blocks; the multiplied-out Joseph form
+// equals (I-KH) P (I-KH)' + K R K'.
 TEST(ErrorStateFilterAlgebra, StructuredProductsEqualThePlainOnes) {
   StepIntegrals step;
   step.dt = 0.05;
@@ -145,7 +146,12 @@ TEST(ErrorStateFilterAlgebra, StructuredProductsEqualThePlainOnes) {
   step.axis_n = Eigen::Vector3d(0.2, 0.3, 0.93) * step.dt;
   step.axis_cross_v = Eigen::Vector3d(0.01, -0.02, 0.005) * step.dt;
   const Eigen::Vector3d w_ie(5e-5, 0, -5e-5);
-  const StateMatrix phi = ErrorStateFilter::transition(step, w_ie, Eigen::Vector3d(0.1, 0.2, 0.97));
+  const Eigen::Vector3d coupling(0.1, 0.2, 0.97);
+  const StateMatrix phi = ErrorStateFilter::transition(step, w_ie, coupling);
+  // The block-by-block transition is the plain second-order series of F dt.
+  const StateMatrix fdt = ErrorStateFilter::dynamics(step, w_ie, coupling) * step.dt;
+  const StateMatrix series = StateMatrix::Identity() + fdt + 0.5 * fdt * fdt;
+  EXPECT_LT((phi - series).norm(), 1e-14 * series.norm());
   const StateMatrix a = StateMatrix::Random();
   const StateMatrix p = a * a.transpose() + StateMatrix::Identity();
   const StateMatrix plain = phi * p * phi.transpose();

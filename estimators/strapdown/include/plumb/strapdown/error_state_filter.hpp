@@ -44,10 +44,14 @@ class ErrorStateFilter {
   const StateMatrix& covariance() const { return p_; }
   StateMatrix& covariance() { return p_; }
 
-  // Transition matrix over an epoch from the integrals the mechanization gathered (means over the
-  // epoch stand in for the time-varying F), to second order in F dt.
+  // The continuous dynamics F over an epoch from the integrals the mechanization gathered (means
+  // over the epoch stand in for the time-varying F).
   // gravity_coupling: when g was learnt from the alignment's |f| it is wrong by u' dba (u: the down
   // direction in the tool frame at alignment), an error the accelerometer-bias states carry.
+  static StateMatrix dynamics(const StepIntegrals& integrals, const Eigen::Vector3d& w_ie,
+                              const Eigen::Vector3d& gravity_coupling = Eigen::Vector3d::Zero());
+  // Transition matrix over the epoch, I + F dt + (F dt)^2 / 2 with F = dynamics(), written block by
+  // block (the same matrix; its zero blocks stay exactly zero, which sandwich() relies on).
   static StateMatrix transition(const StepIntegrals& integrals, const Eigen::Vector3d& w_ie,
                                 const Eigen::Vector3d& gravity_coupling = Eigen::Vector3d::Zero());
   // The covariance predicted over a transition: phi p phi' plus the discrete process noise,
@@ -55,8 +59,8 @@ class ErrorStateFilter {
   // as phi (p + Q/2) phi' + Q/2: one sandwich, not two.
   static StateMatrix predicted_covariance(const StateMatrix& phi, const StateMatrix& p, double dt,
                                           const ProcessNoise& noise);
-  // phi m phi' for a transition() matrix: its bias rows (9-14) are those of the identity, so only
-  // ten rows and ten columns take a product (a third less work than the full 16 x 16 ones).
+  // phi m phi' for a transition() matrix (or the identity): its bias rows (9-14) are those of the
+  // identity and most of its other 3 x 3 blocks are zero, so only the non-zero blocks take a product.
   static StateMatrix sandwich(const StateMatrix& phi, const StateMatrix& m);
   void predict(const StateMatrix& phi, double dt, const ProcessNoise& noise);
 
@@ -65,17 +69,21 @@ class ErrorStateFilter {
   template <int M>
   StateVector update(const Eigen::Matrix<double, M, 1>& r, const Eigen::Matrix<double, M, kStates>& h,
                      const Eigen::Matrix<double, M, M>& noise, double* nis = nullptr) {
-    const Eigen::Matrix<double, kStates, M> pht = p_ * h.transpose();
-    const Eigen::Matrix<double, M, M> s = h * pht + noise;
+    // Every product here is lazy (coefficient by coefficient): with a 16-long side they are too
+    // small for the blocked matrix product Eigen would otherwise pick.
+    const Eigen::Matrix<double, kStates, M> pht = p_.lazyProduct(h.transpose());
+    const Eigen::Matrix<double, M, M> s = h.lazyProduct(pht) + noise;
     // M <= 3: the closed-form inverse of a small symmetric positive definite matrix.
     const Eigen::Matrix<double, M, M> s_inv = s.inverse();
-    const Eigen::Matrix<double, kStates, M> k = pht * s_inv;
+    const Eigen::Matrix<double, kStates, M> k = pht.lazyProduct(s_inv);
     if (nis != nullptr) *nis = r.dot(s_inv * r);
     // Joseph form (I-KH) P (I-KH)' + K R K', multiplied out: P - K(HP) - (K(HP))' + K S K'. The
-    // same matrix for any gain K, at 16 x 16 x M products instead of 16 x 16 x 16 ones.
-    const StateMatrix khp = (k * pht.transpose()).eval();
-    p_ += (k * s).lazyProduct(k.transpose()) - khp - khp.transpose();
-    symmetrize();
+    // same matrix for any gain K, at 16 x 16 x M products instead of 16 x 16 x 16 ones. P stays
+    // exactly symmetric in the same pass: K(HP) + (K(HP))' is, and K S K' is taken as the mean with
+    // its transpose (what symmetrize() did afterwards).
+    const StateMatrix khp = k.lazyProduct(pht.transpose());
+    const StateMatrix ksk = k.lazyProduct(s).lazyProduct(k.transpose());
+    p_ += 0.5 * (ksk + ksk.transpose()) - (khp + khp.transpose());
     return k * r;
   }
 

@@ -129,6 +129,7 @@ class Navigator {
   void apply(const StateVector& dx);
   StillnessInput detector_input(const Input& in) const;
   void refresh_noise(double dt);
+  void refresh_gyro_tolerance();
   double field_azimuth() const;
   std::string reason() const;
 
@@ -167,6 +168,7 @@ class Navigator {
   double last_epoch_t_ = 0;
   StateVector correction_ = StateVector::Zero();
   StillnessDetector detector_;
+  double aligned_gyro_tol_ = 0;  // the detector's extra gyro tolerance once aligned (refresh_gyro_tolerance)
   StillnessState still_state_;
   StillStats align_stats_, zaru_stats_, mag_stats_;
   bool mag_done_this_period_ = false;

@@ -23,10 +23,11 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <deque>
 #include <optional>
 
 #include <Eigen/Core>
+
+#include "plumb/strapdown/ring_queue.hpp"
 
 namespace plumb::strapdown {
 
@@ -102,20 +103,20 @@ class StillnessDetector {
   bool period_quiet(double factor, double extra_gyro_tol) const;
 
   StillnessConfig config_;
-  std::deque<Entry> window_;
+  RingQueue<Entry> window_;
   // Running sums over window_; the rate energy counts what exceeds excess_tol_ (re-summed when the
   // caller's tolerance changes, at filter epochs), and every kResumEvery samples all are re-summed
   // so that rounding cannot build up. Largest |f_dev| and |b_dev| by monotonic queues of
   // (sequence, value).
   Eigen::Vector3d f_sum_ = Eigen::Vector3d::Zero(), w_sum_ = Eigen::Vector3d::Zero();
   double f_square_sum_ = 0, w_excess_square_sum_ = 0, excess_tol_ = -1;
-  std::deque<std::pair<std::uint64_t, double>> f_dev_max_, b_dev_max_;
+  RingQueue<std::pair<std::uint64_t, double>> f_dev_max_, b_dev_max_;
   std::uint64_t entry_count_ = 0, since_resum_ = 0;
   static constexpr std::uint64_t kResumEvery = 4096;
   // The depths of the last depth_window_s (time, depth) and, for their range in O(1) per sample,
   // monotonic queues of (sequence number, depth): the largest and smallest still in the window.
-  std::deque<std::pair<double, double>> depths_;
-  std::deque<std::pair<std::uint64_t, double>> depth_max_, depth_min_;
+  RingQueue<std::pair<double, double>> depths_;
+  RingQueue<std::pair<std::uint64_t, double>> depth_max_, depth_min_;
   std::uint64_t depth_count_ = 0;
   bool candidate_ = false, confirmed_ = false;
   double period_start_ = 0;
