@@ -39,7 +39,7 @@ std::optional<double> optional_number(const estimator::ParameterReader& reader, 
 std::vector<estimator::ParameterSpec> parameter_specs() {
   return {
       {"latitude_deg", "45", "latitude of the collar (deg): the earth rate's split into north and down"},
-      {"gravity", "", "local gravity (m/s^2); empty: learnt from the first still period"},
+      {"gravity", "", "local gravity (m/s^2), only if measured to 1e-4 (a 1e-3 error makes the inclination sigma 10x too small, docs/navigator.md); empty: learnt from the first still period"},
       {"field_uT", "", "reference total field (uT); empty: learnt from the first still period"},
       {"dip_deg", "", "reference dip (deg, positive down); empty: learnt from the first still period"},
       {"output_rate_hz", "1", "rows per second from the end of alignment on"},
