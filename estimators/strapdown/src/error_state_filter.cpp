@@ -6,8 +6,7 @@ namespace plumb::strapdown {
 
 using namespace index;
 
-StateMatrix ErrorStateFilter::dynamics(const StepIntegrals& in, const Eigen::Vector3d& w_ie,
-                                       const Eigen::Vector3d& gravity_coupling) {
+StateMatrix ErrorStateFilter::dynamics(const StepIntegrals& in, const Eigen::Vector3d& w_ie) {
   StateMatrix f = StateMatrix::Zero();
   const double dt = in.dt;
   if (!(dt > 0)) return f;
@@ -17,25 +16,23 @@ StateMatrix ErrorStateFilter::dynamics(const StepIntegrals& in, const Eigen::Vec
   f.block<3, 3>(kVel, kAtt) = -skew(in.f_n / dt);
   f.block<3, 3>(kVel, kVel) = -2.0 * skew(w_ie);
   f.block<3, 3>(kVel, kAccelBias) = -c;
-  f.block<1, 3>(kVel + 2, kAccelBias) += gravity_coupling.transpose();
   f.block<3, 3>(kPos, kVel) = Eigen::Matrix3d::Identity();
   f.block<1, 3>(kDistance, kAtt) = (in.axis_cross_v / dt).transpose();
   f.block<1, 3>(kDistance, kVel) = (in.axis_n / dt).transpose();
+  f(kVel + 2, kGravity) = 1.0;
   return f;
 }
 
-StateMatrix ErrorStateFilter::transition(const StepIntegrals& in, const Eigen::Vector3d& w_ie,
-                                         const Eigen::Vector3d& gravity_coupling) {
+StateMatrix ErrorStateFilter::transition(const StepIntegrals& in, const Eigen::Vector3d& w_ie) {
   StateMatrix phi = StateMatrix::Identity();
   const double dt = in.dt;
   if (!(dt > 0)) return phi;
-  // The non-zero blocks of A = F dt (dynamics()): F's columns 6-8 and 15 are zero and its bias rows
-  // too, so A^2 takes only products through the attitude and velocity blocks: twelve 3 x 3 products
+  // The non-zero blocks of A = F dt (dynamics()): F's columns 6-8 and 15 are zero and its bias and
+  // gravity rows too, so A^2 takes only products through the attitude and velocity blocks: twelve 3 x 3 products
   // instead of a 16 x 6 x 16 one, and phi = I + A + A^2 / 2 is written block by block.
   const Eigen::Matrix3d aaa = -dt * skew(w_ie), aag = -in.c_bn;
   const Eigen::Matrix3d ava = -skew(in.f_n), avv = 2.0 * aaa;
-  Eigen::Matrix3d avb = aag;
-  avb.row(2) += dt * gravity_coupling.transpose();
+  const Eigen::Matrix3d& avb = aag;
   const Eigen::RowVector3d ada = in.axis_cross_v.transpose(), adv = in.axis_n.transpose();
   const Eigen::Matrix3d vva = ava * aaa + avv * ava, vvb = avv * avb;
   const Eigen::Matrix3d vvv = avv * avv;
@@ -53,6 +50,10 @@ StateMatrix ErrorStateFilter::transition(const StepIntegrals& in, const Eigen::V
   phi.block<1, 3>(kDistance, kVel) = adv + 0.5 * adv * avv;
   phi.block<1, 3>(kDistance, kGyroBias) = 0.5 * ada * aag;
   phi.block<1, 3>(kDistance, kAccelBias) = 0.5 * adv * avb;
+  // Gravity's column: A's is dt on the down velocity, A^2's is dt times A's down-velocity column.
+  phi.block<3, 1>(kVel, kGravity) = dt * (Eigen::Vector3d::UnitZ() + 0.5 * avv.col(2));
+  phi(kPos + 2, kGravity) = 0.5 * dt * dt;
+  phi(kDistance, kGravity) = 0.5 * dt * adv(2);
   return phi;
 }
 
@@ -74,37 +75,41 @@ StateVector white_noise(double dt, const ProcessNoise& n) {
 StateMatrix ErrorStateFilter::sandwich(const StateMatrix& phi, const StateMatrix& m) {
   // phi's blocks as transition() fills them: rows of attitude (columns: attitude, gyro bias),
   // velocity (attitude, velocity, both biases), position (attitude, velocity, the identity,
-  // accelerometer bias) and distance (all but position, 1 on the diagonal); the bias rows are the
-  // identity's. Products by block: 3 x 3 blocks against 3-row strips, about 60 % of the
+  // accelerometer bias) and distance (all but position, 1 on the diagonal), each with its gravity
+  // column; the bias and gravity rows are the identity's. Products by block: 3 x 3 blocks against 3-row strips, about 60 % of the
   // multiply-adds of full rows of phi.
-  constexpr int a = kAtt, v = kVel, p = kPos, g = kGyroBias, b = kAccelBias, d = kDistance;
+  constexpr int a = kAtt, v = kVel, p = kPos, g = kGyroBias, b = kAccelBias, d = kDistance, n = kGravity;
   StateMatrix pm = m;
   pm.middleRows<3>(a).noalias() = phi.block<3, 3>(a, a).lazyProduct(m.middleRows<3>(a)) +
                                   phi.block<3, 3>(a, g).lazyProduct(m.middleRows<3>(g));
   pm.middleRows<3>(v).noalias() =
       phi.block<3, 3>(v, a).lazyProduct(m.middleRows<3>(a)) + phi.block<3, 3>(v, v).lazyProduct(m.middleRows<3>(v)) +
-      phi.block<3, 3>(v, g).lazyProduct(m.middleRows<3>(g)) + phi.block<3, 3>(v, b).lazyProduct(m.middleRows<3>(b));
+      phi.block<3, 3>(v, g).lazyProduct(m.middleRows<3>(g)) + phi.block<3, 3>(v, b).lazyProduct(m.middleRows<3>(b)) +
+      phi.block<3, 1>(v, n).lazyProduct(m.row(n));
   pm.middleRows<3>(p).noalias() += phi.block<3, 3>(p, a).lazyProduct(m.middleRows<3>(a)) +
                                    phi.block<3, 3>(p, v).lazyProduct(m.middleRows<3>(v)) +
-                                   phi.block<3, 3>(p, b).lazyProduct(m.middleRows<3>(b));
+                                   phi.block<3, 3>(p, b).lazyProduct(m.middleRows<3>(b)) +
+                                   phi.block<3, 1>(p, n).lazyProduct(m.row(n));
   pm.row(d).noalias() += phi.block<1, 3>(d, a).lazyProduct(m.middleRows<3>(a)) +
                          phi.block<1, 3>(d, v).lazyProduct(m.middleRows<3>(v)) +
                          phi.block<1, 3>(d, g).lazyProduct(m.middleRows<3>(g)) +
-                         phi.block<1, 3>(d, b).lazyProduct(m.middleRows<3>(b));
+                         phi.block<1, 3>(d, b).lazyProduct(m.middleRows<3>(b)) + phi(d, n) * m.row(n);
   StateMatrix out = pm;
   out.middleCols<3>(a).noalias() = pm.middleCols<3>(a).lazyProduct(phi.block<3, 3>(a, a).transpose()) +
                                    pm.middleCols<3>(g).lazyProduct(phi.block<3, 3>(a, g).transpose());
   out.middleCols<3>(v).noalias() = pm.middleCols<3>(a).lazyProduct(phi.block<3, 3>(v, a).transpose()) +
                                    pm.middleCols<3>(v).lazyProduct(phi.block<3, 3>(v, v).transpose()) +
                                    pm.middleCols<3>(g).lazyProduct(phi.block<3, 3>(v, g).transpose()) +
-                                   pm.middleCols<3>(b).lazyProduct(phi.block<3, 3>(v, b).transpose());
+                                   pm.middleCols<3>(b).lazyProduct(phi.block<3, 3>(v, b).transpose()) +
+                                   pm.col(n).lazyProduct(phi.block<3, 1>(v, n).transpose());
   out.middleCols<3>(p).noalias() += pm.middleCols<3>(a).lazyProduct(phi.block<3, 3>(p, a).transpose()) +
                                     pm.middleCols<3>(v).lazyProduct(phi.block<3, 3>(p, v).transpose()) +
-                                    pm.middleCols<3>(b).lazyProduct(phi.block<3, 3>(p, b).transpose());
+                                    pm.middleCols<3>(b).lazyProduct(phi.block<3, 3>(p, b).transpose()) +
+                                    pm.col(n).lazyProduct(phi.block<3, 1>(p, n).transpose());
   out.col(d).noalias() += pm.middleCols<3>(a).lazyProduct(phi.block<1, 3>(d, a).transpose()) +
                           pm.middleCols<3>(v).lazyProduct(phi.block<1, 3>(d, v).transpose()) +
                           pm.middleCols<3>(g).lazyProduct(phi.block<1, 3>(d, g).transpose()) +
-                          pm.middleCols<3>(b).lazyProduct(phi.block<1, 3>(d, b).transpose());
+                          pm.middleCols<3>(b).lazyProduct(phi.block<1, 3>(d, b).transpose()) + phi(d, n) * pm.col(n);
   return out;
 }
 

@@ -36,13 +36,14 @@ Measurement<3> zero_rate(const NavState& x, const Eigen::Vector3d& gyro_bias, co
 }
 
 Measurement<3> tilt(const NavState& x, const Eigen::Vector3d& accel_bias, double g, const Eigen::Vector3d& mean_raw_f,
-                    double sd_mean, const Eigen::Vector3d& gravity_coupling) {
+                    double sd_mean) {
   Measurement<3> m;
   const Eigen::Matrix3d c_nb = x.q.toRotationMatrix().transpose();
   const Eigen::Vector3d g_n(0.0, 0.0, g);
   m.r = -c_nb * g_n + accel_bias - mean_raw_f;
   m.h.block<3, 3>(0, kAtt) = -c_nb * skew(g_n);
-  m.h.block<3, 3>(0, kAccelBias) = Eigen::Matrix3d::Identity() - c_nb.col(2) * gravity_coupling.transpose();
+  m.h.block<3, 3>(0, kAccelBias).setIdentity();
+  m.h.block<3, 1>(0, kGravity) = -c_nb.col(2);
   set_noise(m, sd_mean);
   return m;
 }

@@ -67,8 +67,6 @@ void Navigator::reset() {
   dt_nominal_ = 0;
   saw_gyro_ = saw_no_gyro_ = saw_mag_ = false;
   g_ = config_.gravity.value_or(9.80665);
-  gravity_source_f_.setZero();
-  gravity_coupling_.setZero();
   b0_ = config_.field_uT;
   dip0_ = config_.dip;
   accel_in_g_ = false;
@@ -395,8 +393,6 @@ void Navigator::align(const Input& in) {
   }
   accel_in_g_ = false;
   g_ = config_.gravity.value_or(fn);
-  gravity_source_f_ = f;
-  gravity_coupling_ = config_.gravity ? Eigen::Vector3d::Zero() : Eigen::Vector3d(-f / fn);
   const bool mag = config_.use_magnetometer && stats.mag_count() >= StillnessConfig::kMinWindowSamples;
   Eigen::Vector3d b = Eigen::Vector3d::Zero();
   if (mag) {
@@ -449,6 +445,22 @@ void Navigator::align(const Input& in) {
   p0.block<3, 3>(kGyroBias, kGyroBias).diagonal().setConstant(config_.gyro_bias_sd * config_.gyro_bias_sd);
   p0.block<3, 3>(kAccelBias, kAccelBias).diagonal().setConstant(config_.accel_bias_sd * config_.accel_bias_sd);
   p0(kDistance, kDistance) = config_.depth_sd * config_.depth_sd;
+  const double n = stats.count();
+  const double dt = dt_nominal_ > 0 ? dt_nominal_ : 0.01;
+  const double sd_f = std::max({stats.sample_sd_f(), config_.accel_vrw / std::sqrt(dt), kMinSigmaAccel});
+  const double sd_mean_f = std::max(sd_f / std::sqrt(n), kMinMeanSdAccel);
+  if (config_.gravity) {
+    p0(kGravity, kGravity) = config_.gravity_sd * config_.gravity_sd;
+  } else {
+    // |mean f| = g + u.b + the mean's noise along u (u = mean f / |mean f|, up in the tool frame),
+    // and the bias estimate starts at zero: dg = -u.dba + noise. Without that noise term the
+    // filter would hold g exact to the bias and its inclination sigma would be 2x too small.
+    const Eigen::Vector3d up = f / fn;
+    const double var_b = config_.accel_bias_sd * config_.accel_bias_sd;
+    p0(kGravity, kGravity) = var_b + sd_mean_f * sd_mean_f;
+    p0.block<1, 3>(kGravity, kAccelBias) = -var_b * up.transpose();
+    p0.block<3, 1>(kAccelBias, kGravity) = -var_b * up;
+  }
   kf_.reset(p0);
   aligned_ = true;
   // From now on the detector sees w less the expected earth rate and bias: its long means restart.
@@ -459,12 +471,9 @@ void Navigator::align(const Input& in) {
 
   // The alignment's own means as the filter's first measurements: they shape P (tilt against the
   // accelerometer biases, heading against the gyro biases) as the data warrant.
-  const double n = stats.count();
-  const double dt = dt_nominal_ > 0 ? dt_nominal_ : 0.01;
-  const double sd_f = std::max({stats.sample_sd_f(), config_.accel_vrw / std::sqrt(dt), kMinSigmaAccel});
   const double sd_w = std::max({stats.sample_sd_w(), config_.gyro_arw / std::sqrt(dt)});
   {
-    const Measurement<3> m = tilt(x_, ba_, g_, f, std::max(sd_f / std::sqrt(n), kMinMeanSdAccel), gravity_coupling_);
+    const Measurement<3> m = tilt(x_, ba_, g_, f, sd_mean_f);
     apply(kf_.update(m.r, m.h, m.noise));
     count("tilt_updates");
   }
@@ -498,10 +507,8 @@ void Navigator::align(const Input& in) {
 void Navigator::apply(const StateVector& dx) {
   feed_back(dx, x_, bg_, ba_);
   correction_ += dx;
-  if (!config_.gravity) {
-    g_ = (gravity_source_f_ - ba_).norm();
-    mech_.set_gravity(g_);
-  }
+  g_ -= dx[kGravity];
+  mech_.set_gravity(g_);
 }
 
 double Navigator::field_azimuth() const { return config_.declination.value_or(0.0); }
@@ -509,7 +516,7 @@ double Navigator::field_azimuth() const { return config_.declination.value_or(0.
 void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   // The full update of the two-rate mechanization, then the filter at the same instant.
   mech_.finish(x_, &integrals_);
-  const StateMatrix phi = ErrorStateFilter::transition(integrals_, mech_.earth_rate(), gravity_coupling_);
+  const StateMatrix phi = ErrorStateFilter::transition(integrals_, mech_.earth_rate());
   const double dt = integrals_.dt;
   kf_.predict(phi, dt, noise_);
   integrals_.clear();
@@ -553,7 +560,7 @@ void Navigator::still_updates(bool period_end) {
     count("zero_rate_updates");
     if (config_.tilt_update) {
       const double sd_f = std::max({zaru_stats_.sample_sd_f(), config_.accel_vrw / std::sqrt(dt), kMinSigmaAccel});
-      const Measurement<3> t = tilt(x_, ba_, g_, zaru_stats_.mean_f(), std::max(sd_f / std::sqrt(n), kMinMeanSdAccel), gravity_coupling_);
+      const Measurement<3> t = tilt(x_, ba_, g_, zaru_stats_.mean_f(), std::max(sd_f / std::sqrt(n), kMinMeanSdAccel));
       apply(kf_.update(t.r, t.h, t.noise));
       count("tilt_updates");
     }

@@ -39,7 +39,8 @@ std::optional<double> optional_number(const estimator::ParameterReader& reader, 
 std::vector<estimator::ParameterSpec> parameter_specs() {
   return {
       {"latitude_deg", "45", "latitude of the collar (deg): the earth rate's split into north and down"},
-      {"gravity", "", "local gravity (m/s^2), only if measured to 1e-4 (a 1e-3 error makes the inclination sigma 10x too small, docs/navigator.md); empty: learnt from the first still period"},
+      {"gravity", "", "local gravity (m/s^2); empty: learnt from the first still period"},
+      {"gravity_sd", "0.002", "how well a given gravity is known, 1 sigma (m/s^2): a formula's value at the site is rarely better than 0.001"},
       {"field_uT", "", "reference total field (uT); empty: learnt from the first still period"},
       {"dip_deg", "", "reference dip (deg, positive down); empty: learnt from the first still period"},
       {"output_rate_hz", "1", "rows per second from the end of alignment on"},
@@ -91,6 +92,7 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   NavigatorConfig c;
   c.latitude = r.number("latitude_deg", -90, 90) * kDegToRad;
   c.gravity = optional_number(r, given, "gravity", 0.1, 100);
+  c.gravity_sd = r.number("gravity_sd", 0, 1);
   c.field_uT = optional_number(r, given, "field_uT", 0.01, 1000);
   if (auto dip = optional_number(r, given, "dip_deg", -90, 90)) c.dip = *dip * kDegToRad;
   c.output_rate_hz = r.number("output_rate_hz", 1e-4, 1e4);

@@ -146,10 +146,9 @@ TEST(ErrorStateFilterAlgebra, StructuredProductsEqualThePlainOnes) {
   step.axis_n = Eigen::Vector3d(0.2, 0.3, 0.93) * step.dt;
   step.axis_cross_v = Eigen::Vector3d(0.01, -0.02, 0.005) * step.dt;
   const Eigen::Vector3d w_ie(5e-5, 0, -5e-5);
-  const Eigen::Vector3d coupling(0.1, 0.2, 0.97);
-  const StateMatrix phi = ErrorStateFilter::transition(step, w_ie, coupling);
-  // The block-by-block transition is the plain second-order series of F dt.
-  const StateMatrix fdt = ErrorStateFilter::dynamics(step, w_ie, coupling) * step.dt;
+  const StateMatrix phi = ErrorStateFilter::transition(step, w_ie);
+  // The block-by-block transition (gravity's column included) is the plain second-order series of F dt.
+  const StateMatrix fdt = ErrorStateFilter::dynamics(step, w_ie) * step.dt;
   const StateMatrix series = StateMatrix::Identity() + fdt + 0.5 * fdt * fdt;
   EXPECT_LT((phi - series).norm(), 1e-14 * series.norm());
   const StateMatrix a = StateMatrix::Random();

@@ -8,10 +8,14 @@
 //   dba (12-14): accelerometer bias error, tool frame, m/s^2
 //   ds  (15):   error of the along-hole distance integrated from the velocity (the quantity a
 //               measured depth observes; no function of the other 15 states gives a path length)
+//   dg  (16):   error of the gravity the mechanization uses, m/s^2, a random constant: a given
+//               value is rarely known to better than 1e-3 m/s^2 and one learnt from |f| at
+//               alignment is off by the accelerometer bias along the vertical and the mean's
+//               noise; with depth the filter would otherwise turn either into tilt
 // Continuous dynamics (flat earth, earth.hpp), C = C_b^n, f_n = C f:
-//   phi' = -w_ie x phi - C dbg + C n_g          dv' = -f_n x phi - 2 w_ie x dv - C dba + C n_a
+//   phi' = -w_ie x phi - C dbg + C n_g          dv' = -f_n x phi - 2 w_ie x dv - C dba + e_D dg + C n_a
 //   dp'  = dv        dbg' = n_bg        dba' = n_ba (random walks)
-//   ds'  = (axis x v) . phi + axis . dv        (axis = C e_z, the tool axis in NED)
+//   ds'  = (axis x v) . phi + axis . dv        (axis = C e_z, the tool axis in NED)       dg' = 0
 // Measurements are residuals r = h(estimate) - z = H dx + noise.
 #pragma once
 
@@ -22,12 +26,12 @@
 
 namespace plumb::strapdown {
 
-inline constexpr int kStates = 16;
+inline constexpr int kStates = 17;
 using StateVector = Eigen::Matrix<double, kStates, 1>;
 using StateMatrix = Eigen::Matrix<double, kStates, kStates>;
 
 namespace index {
-inline constexpr int kAtt = 0, kVel = 3, kPos = 6, kGyroBias = 9, kAccelBias = 12, kDistance = 15;
+inline constexpr int kAtt = 0, kVel = 3, kPos = 6, kGyroBias = 9, kAccelBias = 12, kDistance = 15, kGravity = 16;
 }
 
 // Noise densities in SI units.
@@ -46,14 +50,10 @@ class ErrorStateFilter {
 
   // The continuous dynamics F over an epoch from the integrals the mechanization gathered (means
   // over the epoch stand in for the time-varying F).
-  // gravity_coupling: when g was learnt from the alignment's |f| it is wrong by u' dba (u: the down
-  // direction in the tool frame at alignment), an error the accelerometer-bias states carry.
-  static StateMatrix dynamics(const StepIntegrals& integrals, const Eigen::Vector3d& w_ie,
-                              const Eigen::Vector3d& gravity_coupling = Eigen::Vector3d::Zero());
+  static StateMatrix dynamics(const StepIntegrals& integrals, const Eigen::Vector3d& w_ie);
   // Transition matrix over the epoch, I + F dt + (F dt)^2 / 2 with F = dynamics(), written block by
   // block (the same matrix; its zero blocks stay exactly zero, which sandwich() relies on).
-  static StateMatrix transition(const StepIntegrals& integrals, const Eigen::Vector3d& w_ie,
-                                const Eigen::Vector3d& gravity_coupling = Eigen::Vector3d::Zero());
+  static StateMatrix transition(const StepIntegrals& integrals, const Eigen::Vector3d& w_ie);
   // The covariance predicted over a transition: phi p phi' plus the discrete process noise,
   // trapezoidal in time, (phi Q phi' + Q) / 2 with Q = diag(q) the white noises over dt; computed
   // as phi (p + Q/2) phi' + Q/2: one sandwich, not two.

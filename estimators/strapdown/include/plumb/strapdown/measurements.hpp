@@ -27,9 +27,8 @@ Measurement<3> zero_rate(const NavState& x, const Eigen::Vector3d& gyro_bias, co
 
 // Still: the accelerometers' mean sees only gravity plus their bias: z = mean raw f = -C_n^b g_n + b_a.
 // (Tilt and the horizontal accelerometer biases are one measurement: the filter keeps them correlated.)
-// gravity_coupling as in ErrorStateFilter::transition (g learnt from the data is wrong by u' dba).
 Measurement<3> tilt(const NavState& x, const Eigen::Vector3d& accel_bias, double g, const Eigen::Vector3d& mean_raw_f,
-                    double sd_mean, const Eigen::Vector3d& gravity_coupling = Eigen::Vector3d::Zero());
+                    double sd_mean);
 
 // Still: magnetic heading. The mean field in the tool frame, turned into the navigation frame by
 // the estimated attitude, must point at the reference field's azimuth `field_azimuth` (0 in a

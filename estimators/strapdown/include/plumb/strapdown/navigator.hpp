@@ -29,6 +29,7 @@ enum class DetectorChoice { Auto, Magnitude, Glrt };
 struct NavigatorConfig {
   double latitude = 45.0 * 3.14159265358979323846 / 180.0;
   std::optional<double> gravity;       // m/s^2; learnt from the first still period when absent
+  double gravity_sd = 0.002;           // m/s^2: how well a given gravity is known (the filter's dg state)
   std::optional<double> field_uT;      // reference |B|
   std::optional<double> dip;           // reference dip
   double output_rate_hz = 1;
@@ -148,8 +149,6 @@ class Navigator {
   double g_ = 9.80665;
   // g learnt at alignment: |f_align - b_a|, refreshed as the bias estimate changes; u = down in the
   // tool frame at alignment couples g's error to the accelerometer-bias error (zero when g is given).
-  Eigen::Vector3d gravity_source_f_ = Eigen::Vector3d::Zero();
-  Eigen::Vector3d gravity_coupling_ = Eigen::Vector3d::Zero();
   std::optional<double> b0_, dip0_;
   bool accel_in_g_ = false;
   double accel_in_g_level_ = 0;
