@@ -146,9 +146,8 @@ class Navigator {
   double dt_nominal_ = 0;
   bool saw_gyro_ = false, saw_no_gyro_ = false, saw_mag_ = false;
   // Environment (given or learnt).
+  // Given, or |mean f| at alignment; corrected by the filter's gravity state from then on.
   double g_ = 9.80665;
-  // g learnt at alignment: |f_align - b_a|, refreshed as the bias estimate changes; u = down in the
-  // tool frame at alignment couples g's error to the accelerometer-bias error (zero when g is given).
   std::optional<double> b0_, dip0_;
   bool accel_in_g_ = false;
   double accel_in_g_level_ = 0;
