@@ -148,7 +148,6 @@ void Mechanization::finish(NavState& state, StepIntegrals* integrals) {
     integrals->axis_n += c_bn.col(2);
     integrals->axis_cross_v += c0_ * axis_cross_v_int_;
   }
-  begin(state);
 }
 
 void Mechanization::step(NavState& state, const ImuReading& a, const ImuReading& b, StepIntegrals* integrals,

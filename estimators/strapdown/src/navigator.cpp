@@ -26,6 +26,13 @@ constexpr double kMinSigmaGyro = 1e-6;     // rad/s per sample
 constexpr double kMinMeanSdGyro = 1e-9;    // rad/s, a zero-rate update's mean
 constexpr double kMinMeanSdAccel = 1e-6;   // m/s^2, a tilt update's mean
 
+// The σ of a still stretch's mean specific force (a tilt measurement): the scatter seen, never
+// below the sensor's white noise or the floor.
+double mean_force_sd(const StillStats& stats, double accel_vrw, double dt) {
+  const double sd_f = std::max({stats.sample_sd_f(), accel_vrw / std::sqrt(dt), kMinSigmaAccel});
+  return std::max(sd_f / std::sqrt(stats.count()), kMinMeanSdAccel);
+}
+
 std::string format(const char* fmt, double a, double b = 0, double c = 0) {
   char text[200];
   std::snprintf(text, sizeof text, fmt, a, b, c);
@@ -447,8 +454,7 @@ void Navigator::align(const Input& in) {
   p0(kDistance, kDistance) = config_.depth_sd * config_.depth_sd;
   const double n = stats.count();
   const double dt = dt_nominal_ > 0 ? dt_nominal_ : 0.01;
-  const double sd_f = std::max({stats.sample_sd_f(), config_.accel_vrw / std::sqrt(dt), kMinSigmaAccel});
-  const double sd_mean_f = std::max(sd_f / std::sqrt(n), kMinMeanSdAccel);
+  const double sd_mean_f = mean_force_sd(stats, config_.accel_vrw, dt);
   if (config_.gravity) {
     p0(kGravity, kGravity) = config_.gravity_sd * config_.gravity_sd;
   } else {
@@ -559,8 +565,7 @@ void Navigator::still_updates(bool period_end) {
     apply(kf_.update(m.r, m.h, m.noise));
     count("zero_rate_updates");
     if (config_.tilt_update) {
-      const double sd_f = std::max({zaru_stats_.sample_sd_f(), config_.accel_vrw / std::sqrt(dt), kMinSigmaAccel});
-      const Measurement<3> t = tilt(x_, ba_, g_, zaru_stats_.mean_f(), std::max(sd_f / std::sqrt(n), kMinMeanSdAccel));
+      const Measurement<3> t = tilt(x_, ba_, g_, zaru_stats_.mean_f(), mean_force_sd(zaru_stats_, config_.accel_vrw, dt));
       apply(kf_.update(t.r, t.h, t.noise));
       count("tilt_updates");
     }

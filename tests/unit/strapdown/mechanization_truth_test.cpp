@@ -58,7 +58,10 @@ Residual integrate(Simulator& sim, double latitude_deg, double g, TruthAt at, in
   for (std::size_t k = 1; k < s.size(); ++k) {
     const ImuReading before = k >= 2 ? reading(k - 2) : ImuReading{};
     mech.step(reading(k - 1), reading(k), k >= 2 ? &before : nullptr);
-    if (k % epoch == 0 || k + 1 == s.size()) mech.finish(x);
+    if (k % epoch == 0 || k + 1 == s.size()) {
+      mech.finish(x);
+      mech.begin(x);
+    }
     if (k % 20 == 0) {
       const double err = angle_between_deg(mech.state().q.toRotationMatrix(), at(s[k].t).c_nb);
       r.max_attitude_deg = std::max(r.max_attitude_deg, err);

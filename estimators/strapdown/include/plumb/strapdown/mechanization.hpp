@@ -75,7 +75,8 @@ class Mechanization {
   void step(const ImuReading& a, const ImuReading& b, const ImuReading* before = nullptr);
   // The full update: the state at the last reading, without starting again.
   NavState state() const;
-  // The full update, adding the steps since begin() to `integrals`, and begin() from its result.
+  // The full update, adding the steps since begin() to `integrals`. The caller begins again from the
+  // state it settles on (after the filter's corrections).
   void finish(NavState& state, StepIntegrals* integrals = nullptr);
   // One reading's step with its full update (begin, step, finish): for tests and single steps.
   void step(NavState& state, const ImuReading& a, const ImuReading& b, StepIntegrals* integrals = nullptr,
