@@ -93,6 +93,13 @@ int run_host(const HostOptions& o) {
       if (!o.quiet) print_estimate(e, truth.get(), input.tools() > 1 ? " tool '" + tool + "'" : std::string());
     };
   };
+  std::string last_notice;  // the latest thing a plugin had to say, on plumb/status too
+  const auto say_notices = [&](estimator::Runner& runner, const std::string& tool) {
+    for (std::string& text : runner.take_notices()) {
+      std::cerr << "plumb-estimator: " << (input.tools() > 1 ? "tool '" + tool + "': " : std::string()) << text << std::endl;
+      last_notice = std::move(text);
+    }
+  };
   std::map<std::string, std::optional<double>> last_t;  // tool id -> time of its last sample
   std::uint64_t new_runs = 0;
   const auto counters = [&] {
@@ -159,6 +166,7 @@ int run_host(const HostOptions& o) {
           rest = rest.subspan(cut);
         }
         runner.push(rest, publisher_for(tool));
+        say_notices(runner, tool);
         last_t[tool] = rest.back().t;
         chunk.clear();
       }
@@ -169,7 +177,10 @@ int run_host(const HostOptions& o) {
     const double silent_s = seconds_since(last_sample_time);
     if (pending && o.idle_flush_s > 0 && silent_s > o.idle_flush_s) {
       // The stream stopped: report what the open windows hold rather than keep it forever.
-      for (auto& [tool, runner] : runners) runner.flush(publisher_for(tool));
+      for (auto& [tool, runner] : runners) {
+        runner.flush(publisher_for(tool));
+        say_notices(runner, tool);
+      }
       pending = false;
       input.restart_sequence();
     }
@@ -177,7 +188,7 @@ int run_host(const HostOptions& o) {
       explain_silence(*conn.participant, input, o.input_topic, silent_s);
       next_silence_note_s *= 2;  // 5, 10, 20, ... s: said, not shouted
     }
-    if (status.due()) status.publish("running", counters());
+    if (status.due()) status.publish("running", counters(), last_notice);
   }
   status.publish("stopping", counters());
   std::cerr << "plumb-estimator: " << input.batches() << " batches, " << input.samples() << " samples ("

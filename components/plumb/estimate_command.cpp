@@ -48,6 +48,9 @@ int run_estimate(const EstimateOptions& o) {
     }
     csv::write_attitude_header(*out, navigation);
   };
+  const auto say_notices = [](estimator::Runner& r) {
+    for (const std::string& text : r.take_notices()) std::cerr << "plumb estimate: " << text << '\n';
+  };
   const auto write = [&](const estimator::Runner::Slot&, Estimate& e) { csv::write_attitude_row(*out, e, navigation); };
   const SampleInput input{"plumb estimate", o.input, o.topic, o.import.make(), o.skip_bad_rows};
   const SampleInputSummary summary = read_samples(
@@ -56,8 +59,10 @@ int run_estimate(const EstimateOptions& o) {
       [&](const std::vector<Sample>& chunk) {
         start();
         runner.push(chunk, write);
+        say_notices(runner);
       });
   runner.flush(write);
+  say_notices(runner);
   out->flush();
 
   std::cerr << "plumb estimate: " << summary.describe(o.input) << '\n';

@@ -25,6 +25,7 @@ class StrapdownEstimator final : public estimator::Estimator {
     for (const Sample& s : samples) navigator_.push(s, out);
   }
   void flush(std::vector<Estimate>& out) override { navigator_.flush(out); }
+  std::vector<std::string> take_notices() override { return navigator_.take_notices(); }
   estimator::Counters counters() const override {
     estimator::Counters c;
     for (const auto& [name, value] : navigator_.counters()) c[name] = value;

@@ -63,6 +63,13 @@ std::vector<std::pair<std::string, std::uint64_t>> Runner::counters() const {
   return out;
 }
 
+std::vector<std::string> Runner::take_notices() {
+  std::vector<std::string> out;
+  for (auto& s : slots_)
+    for (auto& text : s.estimator->take_notices()) out.push_back(s.name + ": " + text);
+  return out;
+}
+
 std::vector<std::string> Runner::needing_gyro() const {
   std::vector<std::string> out;
   for (const auto& s : slots_)

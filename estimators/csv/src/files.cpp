@@ -212,7 +212,9 @@ bool SensorReader::next(Sample& out) {
       s.temp_c = get(col_temp_);
       s.flags |= flags::kHasTemperature;
     }
-    if (has_depth()) {
+    // A rig reports depth about once a second: a logger writes it on the row after each report and
+    // leaves the cell empty elsewhere. An empty cell is a row without depth, not a bad number.
+    if (has_depth() && !fields[col_depth_].empty()) {
       s.depth_m = get(col_depth_);
       s.flags |= flags::kHasDepth;
     }

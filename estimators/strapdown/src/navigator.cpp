@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 
 #include "plumb/core/attitude.hpp"
@@ -25,6 +26,10 @@ constexpr double kMinSigmaAccel = 1e-3;    // m/s^2 per sample
 constexpr double kMinSigmaGyro = 1e-6;     // rad/s per sample
 constexpr double kMinMeanSdGyro = 1e-9;    // rad/s, a zero-rate update's mean
 constexpr double kMinMeanSdAccel = 1e-6;   // m/s^2, a tilt update's mean
+// The range of a second of depth readings: white noise per reading spans about 6 sigma over a few
+// hundred readings (and a held 1 Hz report up to 5 sigma between two reports).
+constexpr double kDepthRangeSigmas = 8.0;
+constexpr double kRadPerSecToDegPerHour = kRadToDeg * 3600.0;
 
 // The σ of a still stretch's mean specific force (a tilt measurement): the scatter seen, never
 // below the sensor's white noise or the floor.
@@ -109,6 +114,18 @@ void Navigator::reset() {
   sc.accel_drift_tol = config_.still_accel_drift_tol;
   sc.depth_tol_m = config_.still_depth_tol_m;
   detector_.configure(sc);
+  noise_floor_.clear();
+  floor_blocks_used_ = 0;
+  measured_sigma_a_.reset();
+  measured_sigma_w_.reset();
+  measured_depth_sd_.reset();
+  depth_sd_ = config_.depth_sd;
+  refresh_depth_tolerance();
+  first_t_.reset();
+  tally_.clear();
+  align_notice_given_ = stop_notice_given_ = false;
+  last_still_t_ = 0;
+  notices_.clear();
   still_state_ = StillnessState();
   align_stats_.clear();
   zaru_stats_.clear();
@@ -288,8 +305,132 @@ void Navigator::refresh_gyro_tolerance() {
 
 void Navigator::refresh_noise(double dt) {
   if (!(dt > 0)) return;
-  detector_.set_noise(std::max(config_.accel_vrw / std::sqrt(dt), kMinSigmaAccel),
-                      std::max(config_.gyro_arw / std::sqrt(dt), kMinSigmaGyro));
+  const double sigma_a = measured_sigma_a_.value_or(config_.accel_vrw / std::sqrt(dt));
+  const double sigma_w = measured_sigma_w_.value_or(config_.gyro_arw / std::sqrt(dt));
+  detector_.set_noise(std::max(sigma_a, kMinSigmaAccel), std::max(sigma_w, kMinSigmaGyro));
+}
+
+// Stated depth noise sets the depth test's limit from the start; unstated, the test waits for the
+// noise the reports show, so that a noisy rig feed cannot hold off every still period meanwhile.
+void Navigator::refresh_depth_tolerance() {
+  double tol = std::numeric_limits<double>::infinity();
+  if (config_.depth_noise_stated) {
+    tol = std::max(config_.still_depth_tol_m, kDepthRangeSigmas * config_.depth_sd);
+  } else if (measured_depth_sd_ || aligned_) {
+    // Aligned without a measured noise: the reports never changed while still (exact depth).
+    tol = std::max(config_.still_depth_tol_m, kDepthRangeSigmas * measured_depth_sd_.value_or(0.0));
+  }
+  detector_.set_depth_tolerance(tol);
+}
+
+// ---- never silent --------------------------------------------------------------------------------
+
+// Before alignment: what the user did not state of the noise is read off the data, and a run that
+// has not aligned after notice_after_s of data says why, once.
+void Navigator::watch_before_alignment(const Input& in) {
+  if (!first_t_) first_t_ = in.t;
+  noise_floor_.add(in.t, in.f, in.w, in.depth);
+  if (noise_floor_.blocks() != floor_blocks_used_) adopt_noise_floor();
+  if (align_notice_given_ || in.t - *first_t_ < config_.notice_after_s) return;
+  align_notice_given_ = true;
+  notices_.push_back(format("not aligned after %.0f s of data: no still period of %.1f s found. ", in.t - *first_t_,
+                            config_.min_still_s) +
+                     failing_test_text());
+}
+
+bool Navigator::noise_known() const {
+  if (detector_.config().mode != StillnessConfig::Mode::Magnitude) return true;
+  return (config_.accel_noise_stated || measured_sigma_a_) && (config_.gyro_noise_stated || measured_sigma_w_);
+}
+
+void Navigator::adopt_noise_floor() {
+  floor_blocks_used_ = noise_floor_.blocks();
+  if (detector_.config().mode == StillnessConfig::Mode::Magnitude) {
+    if (!config_.accel_noise_stated) measured_sigma_a_ = noise_floor_.accel_sd();
+    if (!config_.gyro_noise_stated) measured_sigma_w_ = noise_floor_.gyro_sd();
+  }
+  if (!config_.depth_noise_stated && noise_floor_.depth_sd()) {
+    measured_depth_sd_ = noise_floor_.depth_sd();
+    depth_sd_ = std::max(config_.depth_sd, *measured_depth_sd_);
+    refresh_depth_tolerance();
+  }
+}
+
+// At alignment: the filter takes the measured noise where the user stated none and it exceeds the
+// preset (a preset is a class of sensors, not this one), and the log says which noise set the limits.
+void Navigator::adopt_measured_noise(double dt) {
+  const double root_dt = std::sqrt(dt);
+  if (measured_sigma_w_) noise_.gyro_arw = std::max(config_.gyro_arw, *measured_sigma_w_ * root_dt);
+  if (measured_sigma_a_) noise_.accel_vrw = std::max(config_.accel_vrw, *measured_sigma_a_ * root_dt);
+  if (!measured_sigma_a_ && !measured_sigma_w_ && !measured_depth_sd_) return;
+  const auto said = [](bool measured) { return measured ? "measured" : "stated"; };
+  const StillnessConfig& d = detector_.config();
+  std::string text = format("noise per sample behind the stillness limits and the filter: accelerometer %.3g m/s^2 (", d.sigma_a) +
+         said(measured_sigma_a_.has_value()) + format("), gyro %.3g deg/h (", d.sigma_w * kRadPerSecToDegPerHour) +
+         said(measured_sigma_w_.has_value()) + ")";
+  if (measured_depth_sd_) text += format(", depth %.3g m (measured)", *measured_depth_sd_);
+  notices_.push_back(text);
+}
+
+// Aligned: a run without a stop for no_stop_notice_s says so once (the zero-velocity updates are
+// what bounds the drift).
+void Navigator::watch_for_stops(double t) {
+  if (still_state_.still) {
+    last_still_t_ = t;
+    tally_.clear();
+    stop_notice_given_ = false;
+    return;
+  }
+  tally_.add(detector_.binding_check(aligned_gyro_tol_));
+  if (stop_notice_given_ || t - last_still_t_ < config_.no_stop_notice_s) return;
+  stop_notice_given_ = true;
+  notices_.push_back(format("no still period for %.0f s (since t = %.1f s): no zero-velocity update bounds the drift. ",
+                            t - last_still_t_, last_still_t_) +
+                     failing_test_text());
+}
+
+// The detector's test that failed most often, at its closest approach to its limit, and the
+// parameter that sets that limit.
+std::string Navigator::failing_test_text() const {
+  using Test = StillnessCheck::Test;
+  const StillnessCheck c = tally_.most_frequent();
+  const auto noise = [&](const std::string& sensor, double sigma, const std::string& unit, bool stated,
+                         const std::string& parameter) {
+    return " (set by the " + sensor + " noise, " + format("%.3g", sigma) + " " + unit +
+           (stated ? ", as stated in " : ", read off the data; state it with ") + parameter + ")";
+  };
+  std::string text = "The test that failed most: " + std::string(test_name(c.test)) + ", at best ";
+  const double sigma_a = detector_.config().sigma_a, sigma_w = detector_.config().sigma_w;
+  switch (c.test) {
+    case Test::Acceleration:
+      return text + format("%.3g m/s^2 against its limit %.3g", c.statistic, c.limit) +
+             noise("accelerometer", sigma_a, "m/s^2 per sample", config_.accel_noise_stated, "accel_vrw_mps_rt_h") +
+             "; or raise still_accel_tol";
+    case Test::ForceSteadiness:
+      return text + format("%.3g m/s^2 against its limit %.3g", c.statistic, c.limit) +
+             noise("accelerometer", sigma_a, "m/s^2 per sample", config_.accel_noise_stated, "accel_vrw_mps_rt_h") +
+             "; or raise still_accel_drift_tol";
+    case Test::GyroWindow:
+    case Test::GyroStretch:
+      return text + format("%.3g deg/h against its limit %.3g", c.statistic * kRadPerSecToDegPerHour,
+                           c.limit * kRadPerSecToDegPerHour) +
+             noise("gyro", sigma_w * kRadPerSecToDegPerHour, "deg/h per sample", config_.gyro_noise_stated,
+                   "gyro_arw_deg_rt_h") +
+             "; state the gyro bias with gyro_bias_dph, or raise still_gyro_tol_dph";
+    case Test::Field:
+      return text + format("%.3g uT against its limit %.3g: the field is disturbed or still_field_tol_uT is too small",
+                           c.statistic, c.limit);
+    case Test::Glrt:
+      return text + format("%.3g against glrt_threshold %.3g: state the sensor noise (gyro_arw_deg_rt_h, accel_vrw_mps_rt_h) or raise glrt_threshold",
+                           c.statistic, c.limit);
+    case Test::Depth:
+      return text + format("%.3g m against its limit %.3g: state the depth noise with depth_sd_m or raise still_depth_tol_m",
+                           c.statistic, c.limit);
+    case Test::None:
+      break;
+  }
+  return "No sample failed a stillness test: the quiet stretches were shorter than min_still_s, or no reading could be "
+         "tested (gaps, saturated sensors).";
 }
 
 // ---- processing ----------------------------------------------------------------------------------
@@ -356,6 +497,7 @@ void Navigator::process(const Input& in, std::vector<Estimate>& out) {
 }
 
 void Navigator::before_alignment(const Input& in, std::vector<Estimate>& out) {
+  watch_before_alignment(in);
   if (in.gyro_bad || in.accel_bad) {
     const bool was_still = detector_.still();
     detector_.reset();
@@ -363,9 +505,12 @@ void Navigator::before_alignment(const Input& in, std::vector<Estimate>& out) {
     still_state_.ended = was_still;
   } else {
     still_state_ = detector_.update(detector_input(in));
+    // Noise neither stated nor measured yet: a still period cannot be judged, so none starts.
+    if (!noise_known()) still_state_ = StillnessState();
   }
   if (still_state_.started) count("still_periods");
   if (still_state_.still) align_stats_.add(in.f, in.w, in.b, in.t);
+  if (!still_state_.still) tally_.add(detector_.binding_check(detector_input(in).extra_gyro_tol));
   const bool long_enough = align_stats_.duration() >= config_.align_s;
   const bool period_over = still_state_.ended && align_stats_.count() >= StillnessConfig::kMinWindowSamples;
   if (still_state_.still && long_enough) {
@@ -451,10 +596,11 @@ void Navigator::align(const Input& in) {
   p0.block<3, 3>(kPos, kPos).diagonal().setConstant(1e-8);
   p0.block<3, 3>(kGyroBias, kGyroBias).diagonal().setConstant(config_.gyro_bias_sd * config_.gyro_bias_sd);
   p0.block<3, 3>(kAccelBias, kAccelBias).diagonal().setConstant(config_.accel_bias_sd * config_.accel_bias_sd);
-  p0(kDistance, kDistance) = config_.depth_sd * config_.depth_sd;
+  p0(kDistance, kDistance) = depth_sd_ * depth_sd_;
   const double n = stats.count();
   const double dt = dt_nominal_ > 0 ? dt_nominal_ : 0.01;
-  const double sd_mean_f = mean_force_sd(stats, config_.accel_vrw, dt);
+  adopt_measured_noise(dt);
+  const double sd_mean_f = mean_force_sd(stats, noise_.accel_vrw, dt);
   if (config_.gravity) {
     p0(kGravity, kGravity) = config_.gravity_sd * config_.gravity_sd;
   } else {
@@ -469,6 +615,9 @@ void Navigator::align(const Input& in) {
   }
   kf_.reset(p0);
   aligned_ = true;
+  refresh_depth_tolerance();
+  tally_.clear();
+  last_still_t_ = in.t;
   // From now on the detector sees w less the expected earth rate and bias: its long means restart.
   detector_.restart_stretch();
   aligned_at_ = in.t;
@@ -477,7 +626,7 @@ void Navigator::align(const Input& in) {
 
   // The alignment's own means as the filter's first measurements: they shape P (tilt against the
   // accelerometer biases, heading against the gyro biases) as the data warrant.
-  const double sd_w = std::max({stats.sample_sd_w(), config_.gyro_arw / std::sqrt(dt)});
+  const double sd_w = std::max({stats.sample_sd_w(), noise_.gyro_arw / std::sqrt(dt)});
   {
     const Measurement<3> m = tilt(x_, ba_, g_, f, sd_mean_f);
     apply(kf_.update(m.r, m.h, m.noise));
@@ -543,7 +692,7 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
     }
   }
   if (latest_depth_ && have_depth0_ && in.t - last_depth_update_t_ >= config_.depth_interval_s - 0.5 * dt_nominal_) {
-    const Measurement<1> m = along_hole_distance(x_, *latest_depth_ - depth0_, config_.depth_sd);
+    const Measurement<1> m = along_hole_distance(x_, *latest_depth_ - depth0_, depth_sd_);
     apply(kf_.update(m.r, m.h, m.noise));
     count("depth_updates");
     last_depth_update_t_ = in.t;
@@ -551,6 +700,7 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   // The minor steps go on from the corrected state.
   mech_.begin(x_);
   refresh_gyro_tolerance();
+  watch_for_stops(in.t);
   if (config_.smooth) smoother_.store(phi, dt, correction_, x_, bg_, ba_, kf_.covariance());
   emit(in.t, out);
 }
@@ -559,13 +709,13 @@ void Navigator::still_updates(bool period_end) {
   const double dt = dt_nominal_ > 0 ? dt_nominal_ : 0.01;
   const double n = zaru_stats_.count();
   if (n >= StillnessConfig::kMinWindowSamples && (period_end || zaru_stats_.duration() >= config_.zaru_interval_s)) {
-    const double sd_w = std::max(zaru_stats_.sample_sd_w(), config_.gyro_arw / std::sqrt(dt));
+    const double sd_w = std::max(zaru_stats_.sample_sd_w(), noise_.gyro_arw / std::sqrt(dt));
     const Measurement<3> m =
         zero_rate(x_, bg_, mech_.earth_rate(), zaru_stats_.mean_w(), std::max(sd_w / std::sqrt(n), kMinMeanSdGyro));
     apply(kf_.update(m.r, m.h, m.noise));
     count("zero_rate_updates");
     if (config_.tilt_update) {
-      const Measurement<3> t = tilt(x_, ba_, g_, zaru_stats_.mean_f(), mean_force_sd(zaru_stats_, config_.accel_vrw, dt));
+      const Measurement<3> t = tilt(x_, ba_, g_, zaru_stats_.mean_f(), mean_force_sd(zaru_stats_, noise_.accel_vrw, dt));
       apply(kf_.update(t.r, t.h, t.noise));
       count("tilt_updates");
     }
@@ -612,6 +762,10 @@ std::string Navigator::reason() const {
   if (accel_in_g_) {
     return format("accelerometers read |f| = %.3f at rest: they look like g units, strapdown needs m/s^2",
                   accel_in_g_level_);
+  }
+  if (!aligned_ && align_notice_given_) {
+    // The row's reason is short (the attitude topic bounds it); the notice says the rest.
+    return "not aligned: no still period (" + std::string(test_name(tally_.most_frequent().test)) + " too large)";
   }
   if (!aligned_) return "aligning: waiting for the first still period";
   return {};

@@ -49,7 +49,7 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"initial_azimuth_sd_deg", "0", "standard deviation of initial_azimuth_deg (deg)"},
       {"gyrocompass", "0", "azimuth from the earth rate at alignment (navigation-grade gyros only); azimuth is then 'true'"},
       {"declination_deg", "", "magnetic declination (deg, east positive); given: azimuths are true"},
-      {"imu_grade", "tactical", "sensor noise preset: navigation, tactical or mems (the noise parameters below override it)"},
+      {"imu_grade", "tactical", "sensor noise preset: navigation, tactical or mems (the noise parameters below override it; noise not stated is also read off the data before alignment, and the larger is used)"},
       {"gyro_arw_deg_rt_h", "", "gyro angle random walk (deg/sqrt(h)); empty: from imu_grade"},
       {"accel_vrw_mps_rt_h", "", "accelerometer velocity random walk (m/s/sqrt(h)); empty: from imu_grade"},
       {"gyro_bias_dph", "", "gyro turn-on bias, 1 sigma per axis (deg/h); empty: from imu_grade"},
@@ -66,7 +66,7 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"still_gyro_tol_dph", "5", "gyro quiet: mean rate beyond earth rate and bias allowed (deg/h, plus the noise allowance)"},
       {"still_accel_drift_tol", "0.002", "specific-force steadiness: window mean vs still-period mean beyond the noise allowance (m/s^2)"},
       {"glrt_threshold", "15", "GLRT detector threshold (the statistic is about 6 for a still tool)"},
-      {"still_depth_tol_m", "0.01", "with depth: largest depth change over 1 s of a still tool (m)"},
+      {"still_depth_tol_m", "0.01", "with depth: largest depth change over 1 s of a still tool (m; never below 8 sigma of the depth noise)"},
       {"align_s", "30", "longest stretch of the first still period used for alignment (s)"},
       {"field_tol_uT", "0.5", "a stop's |B| further than this from the reference skips its azimuth update (uT)"},
       {"dip_tol_deg", "0.3", "a stop's dip further than this from the reference skips its azimuth update (deg)"},
@@ -78,11 +78,13 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"tilt_update", "0", "separate accelerometer tilt update at stops (1: counts the accelerometer noise twice with the zero-velocity updates)"},
       {"lateral_velocity_update", "1", "while moving, lateral velocity zero in the tool frame (a drilling tool; 0 for a foot, hand-carried or vehicle-mounted sensor)"},
       {"nhc_sd_mps", "0.01", "lateral velocity of a drilling tool, 1 sigma (m/s)"},
-      {"depth_sd_m", "0.01", "measured depth noise, 1 sigma (m)"},
+      {"depth_sd_m", "", "measured depth noise, 1 sigma (m); empty: 0.01 or what the depth reports show before alignment, whichever is larger"},
       {"depth_interval_s", "1", "seconds between measured-depth updates"},
       {"smooth", "0", "offline backward (RTS) smoother: push() emits nothing, flush() emits every row smoothed"},
       {"max_gap_s", "1", "a time step longer than this is a gap: reported, bridged by prediction only (s)"},
       {"gyro_time_offset_s", "0", "gyro readings were measured this long after their time stamp (s)"},
+      {"notice_after_s", "60", "data without alignment this long: the log says once which stillness test fails and what to change (s)"},
+      {"no_stop_notice_s", "3600", "aligned, but no still period this long: the log says so once (s)"},
   };
 }
 
@@ -115,8 +117,12 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   if (grade == nullptr) {
     throw ParameterError("parameter 'imu_grade': '" + grade_name + "' is not one of navigation, tactical, mems");
   }
-  c.gyro_arw = optional_number(r, given, "gyro_arw_deg_rt_h", 0, 100).value_or(grade->gyro_arw) * kDegToRad * kPerRootHour;
-  c.accel_vrw = optional_number(r, given, "accel_vrw_mps_rt_h", 0, 100).value_or(grade->accel_vrw) * kPerRootHour;
+  const std::optional<double> arw = optional_number(r, given, "gyro_arw_deg_rt_h", 0, 100);
+  const std::optional<double> vrw = optional_number(r, given, "accel_vrw_mps_rt_h", 0, 100);
+  c.gyro_arw = arw.value_or(grade->gyro_arw) * kDegToRad * kPerRootHour;
+  c.accel_vrw = vrw.value_or(grade->accel_vrw) * kPerRootHour;
+  c.gyro_noise_stated = arw.has_value();
+  c.accel_noise_stated = vrw.has_value();
   c.gyro_bias_sd = optional_number(r, given, "gyro_bias_dph", 0, 1e5).value_or(grade->gyro_bias_dph) * kDegPerHour;
   c.accel_bias_sd = optional_number(r, given, "accel_bias_mg", 0, 1e4).value_or(grade->accel_bias_mg) * kMilliG;
   c.gyro_bias_instability = r.number("gyro_bias_instability_dph", 0, 1e5) * kDegPerHour;
@@ -154,11 +160,15 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   c.tilt_update = r.boolean("tilt_update");
   c.lateral_velocity_update = r.boolean("lateral_velocity_update");
   c.nhc_sd = r.number("nhc_sd_mps", 1e-9, 10);
-  c.depth_sd = r.number("depth_sd_m", 1e-9, 100);
+  const std::optional<double> depth_sd = optional_number(r, given, "depth_sd_m", 1e-9, 100);
+  c.depth_sd = depth_sd.value_or(0.01);
+  c.depth_noise_stated = depth_sd.has_value();
   c.depth_interval_s = r.number("depth_interval_s", 0, 3600);
   c.smooth = r.boolean("smooth");
   c.max_gap_s = r.number("max_gap_s", 1e-6, 1e6);
   c.gyro_time_offset_s = r.number("gyro_time_offset_s", -1, 1);
+  c.notice_after_s = r.number("notice_after_s", 0, 1e7);
+  c.no_stop_notice_s = r.number("no_stop_notice_s", 0, 1e7);
   return c;
 }
 

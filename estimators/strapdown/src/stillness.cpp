@@ -100,6 +100,60 @@ bool StillnessDetector::window_quiet(double factor) const {
   return gyro_ok && last_statistic_ < factor * accel_tol && window_b_dev_ < factor * config_.field_tol_uT;
 }
 
+StillnessCheck StillnessDetector::binding_check(double extra_gyro_tol) const {
+  using Test = StillnessCheck::Test;
+  StillnessCheck worst;
+  if (window_.size() < StillnessConfig::kMinWindowSamples) return worst;
+  const auto consider = [&](Test test, double statistic, double limit) {
+    const StillnessCheck c{test, statistic, limit};
+    if (worst.test == Test::None || c.ratio() > worst.ratio()) worst = c;
+  };
+  consider(Test::GyroWindow, window_w_mean_norm_, window_gyro_allowance_);
+  if (config_.mode == StillnessConfig::Mode::Glrt) {
+    consider(Test::Glrt, last_statistic_, config_.glrt_threshold);
+  } else {
+    consider(Test::Acceleration, last_statistic_, std::max(config_.accel_tol, 4.0 * config_.sigma_a));
+    if (window_b_dev_ > 0) consider(Test::Field, window_b_dev_, config_.field_tol_uT);
+  }
+  if (stretch_n_ >= 1) {
+    const double n_window = static_cast<double>(window_.size());
+    consider(Test::GyroStretch, stretch_w_.norm(),
+             config_.gyro_tol + extra_gyro_tol + 4.0 * config_.sigma_w / std::sqrt(stretch_n_));
+    consider(Test::ForceSteadiness, (window_f_mean_ - stretch_f_).norm(),
+             config_.accel_drift_tol + 4.0 * config_.sigma_a * std::sqrt(1.0 / n_window + 1.0 / stretch_n_));
+  }
+  if (last_depth_range_) consider(Test::Depth, *last_depth_range_, config_.depth_tol_m);
+  return worst;
+}
+
+const char* test_name(StillnessCheck::Test test) {
+  switch (test) {
+    case StillnessCheck::Test::Acceleration: return "| |f| - g |";
+    case StillnessCheck::Test::Field: return "| |B| - B0 |";
+    case StillnessCheck::Test::Glrt: return "GLRT statistic";
+    case StillnessCheck::Test::GyroWindow: return "gyro rate";
+    case StillnessCheck::Test::GyroStretch: return "gyro mean rate";
+    case StillnessCheck::Test::ForceSteadiness: return "specific-force drift";
+    case StillnessCheck::Test::Depth: return "depth change over 1 s";
+    case StillnessCheck::Test::None: break;
+  }
+  return "none";
+}
+
+void StillnessTally::add(const StillnessCheck& check) {
+  if (check.test == StillnessCheck::Test::None || !(check.ratio() > 1.0)) return;
+  const auto k = static_cast<int>(check.test);
+  ++count_[k];
+  if (count_[k] == 1 || check.ratio() < closest_[k].ratio()) closest_[k] = check;
+}
+
+StillnessCheck StillnessTally::most_frequent() const {
+  int best = 0;
+  for (int k = 1; k < kTests; ++k)
+    if (count_[k] > count_[best]) best = k;
+  return count_[best] > 0 ? closest_[best] : StillnessCheck();
+}
+
 bool StillnessDetector::period_quiet(double factor, double extra_gyro_tol) const {
   if (stretch_n_ < 1) return true;
   const double allowance = config_.gyro_tol + extra_gyro_tol + 4.0 * config_.sigma_w / std::sqrt(stretch_n_);
@@ -123,6 +177,7 @@ StillnessState StillnessDetector::update(const StillnessInput& in) {
     window_.pop_front();
   }
   bool depth_ok = true, depth_ok_exit = true;
+  last_depth_range_.reset();
   if (in.depth_m) {
     const double d = *in.depth_m;
     depths_.emplace_back(in.t, d);
@@ -136,6 +191,7 @@ StillnessState StillnessDetector::update(const StillnessInput& in) {
     while (depth_max_.front().first < oldest) depth_max_.pop_front();
     while (depth_min_.front().first < oldest) depth_min_.pop_front();
     const double range = depth_max_.front().second - depth_min_.front().second;
+    last_depth_range_ = range;
     depth_ok = range < config_.depth_tol_m;
     depth_ok_exit = range < config_.hysteresis * config_.depth_tol_m;
   }

@@ -81,6 +81,22 @@ TEST(SensorCsv, NonFiniteValuesAreKeptAndFlagged) {
   EXPECT_TRUE(std::isnan(s.f.x()));
 }
 
+// Rig depth arrives about once a second: the rows between reports leave depth_m empty.
+TEST(SensorCsv, EmptyDepthCellIsARowWithoutDepth) {
+  std::istringstream in("t,fx,fy,fz,depth_m\n0,0,0,-9.8,12.5\n0.01,0,0,-9.8,\n0.02,0,0,-9.8,12.51\n");
+  SensorReader r(in, "m");
+  Sample s;
+  ASSERT_TRUE(r.next(s));
+  EXPECT_TRUE(s.flags & flags::kHasDepth);
+  EXPECT_DOUBLE_EQ(s.depth_m, 12.5);
+  ASSERT_TRUE(r.next(s));
+  EXPECT_FALSE(s.flags & flags::kHasDepth);
+  EXPECT_FALSE(s.flags & flags::kNotFinite);
+  ASSERT_TRUE(r.next(s));
+  EXPECT_TRUE(s.flags & flags::kHasDepth);
+  EXPECT_DOUBLE_EQ(s.depth_m, 12.51);
+}
+
 TEST(SensorCsv, WriteThenReadRoundTrips) {
   std::stringstream io;
   write_sensor_header(io, true, true);

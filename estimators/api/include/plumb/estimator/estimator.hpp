@@ -54,6 +54,10 @@ class Estimator {
   // End of the stream: appends an estimate for the samples not yet covered, if there are any.
   virtual void flush(std::vector<Estimate>& out) = 0;
   virtual Counters counters() const = 0;
+  // What the estimator has to say once, as it arises (a stream it cannot estimate and why, the
+  // noise it read off the data): hosts log it and put the latest on plumb/status. Returns and
+  // forgets the messages since the last call.
+  virtual std::vector<std::string> take_notices() { return {}; }
 };
 
 // An estimator that a plugin created: destroyed by the plugin's own destroy function.

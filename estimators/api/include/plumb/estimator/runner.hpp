@@ -46,6 +46,8 @@ class Runner {
   std::vector<Info> infos() const;
   // "estimates", "invalid" and the estimator's own counters, each as "<plugin>.<name>".
   std::vector<std::pair<std::string, std::uint64_t>> counters() const;
+  // Every estimator's notices since the last call (Estimator::take_notices), as "<plugin>: <text>".
+  std::vector<std::string> take_notices();
   // Names of the estimators that need gyros, for the warning when a stream carries none.
   std::vector<std::string> needing_gyro() const;
 

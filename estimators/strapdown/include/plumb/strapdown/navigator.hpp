@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -17,6 +18,7 @@
 #include "plumb/strapdown/alignment.hpp"
 #include "plumb/strapdown/error_state_filter.hpp"
 #include "plumb/strapdown/mechanization.hpp"
+#include "plumb/strapdown/noise_floor.hpp"
 #include "plumb/strapdown/smoother.hpp"
 #include "plumb/strapdown/stillness.hpp"
 
@@ -74,6 +76,16 @@ struct NavigatorConfig {
   double nhc_sd = 0.01;                // m/s
   double depth_sd = 0.01;              // m
   double depth_interval_s = 1;
+  // Whether the user stated the noise (parameters.cpp: the figures given, not a preset). What was
+  // not stated is read off the data before alignment (noise_floor.hpp) for the magnitude detector
+  // and, where it is larger than the preset, for the filter too.
+  bool gyro_noise_stated = true;
+  bool accel_noise_stated = true;
+  bool depth_noise_stated = true;
+  // Never silent: data this long without alignment, or this long aligned without a stop, is said
+  // once (take_notices), with the detector's test that fails and the parameter to change.
+  double notice_after_s = 60;
+  double no_stop_notice_s = 3600;
   // Output and offline.
   bool smooth = false;
   double max_gap_s = 1.0;
@@ -94,6 +106,9 @@ class Navigator {
   // End of stream: the rows still pending (all of them, smoothed, in smoothing mode).
   void flush(std::vector<Estimate>& out);
   const std::map<std::string, std::uint64_t>& counters() const { return counters_; }
+  // What the navigator has to say once (a run that cannot align and why, the noise it measured):
+  // returns and forgets the messages since the last call.
+  std::vector<std::string> take_notices() { return std::exchange(notices_, {}); }
 
   // Introspection for tests.
   bool aligned() const { return aligned_; }
@@ -133,6 +148,13 @@ class Navigator {
   void refresh_gyro_tolerance();
   double field_azimuth() const;
   std::string reason() const;
+  void watch_before_alignment(const Input& in);
+  void adopt_noise_floor();
+  bool noise_known() const;
+  void adopt_measured_noise(double dt);
+  void watch_for_stops(double t);
+  std::string failing_test_text() const;
+  void refresh_depth_tolerance();
 
   NavigatorConfig config_;
   std::map<std::string, std::uint64_t> counters_;
@@ -176,6 +198,17 @@ class Navigator {
   std::optional<double> latest_depth_;
   std::uint32_t zupt_periods_ = 0;
   std::string last_field_warning_;
+  // Never silent (watch_before_alignment, watch_for_stops).
+  NoiseFloor noise_floor_;
+  std::size_t floor_blocks_used_ = 0;
+  // Per-sample noise read off the data, for what the user did not state (the magnitude detector).
+  std::optional<double> measured_sigma_a_, measured_sigma_w_, measured_depth_sd_;
+  double depth_sd_ = 0.01;  // the filter's depth noise: stated, or the larger of the default and the floor
+  std::optional<double> first_t_;
+  StillnessTally tally_;     // what kept the detector from a still period since alignment or the last stop
+  bool align_notice_given_ = false, stop_notice_given_ = false;
+  double last_still_t_ = 0;
+  std::vector<std::string> notices_;
   double gap_warning_until_ = -1;
   // Output.
   double next_output_t_ = 0;

@@ -60,6 +60,33 @@ struct StillnessInput {
   double extra_gyro_tol = 0;                 // rad/s, what the caller does not know of w_expected
 };
 
+// One of the detector's tests at the last sample, as its statistic against its limit (the window
+// is not still when statistic > limit): the one furthest from passing is what a user needs to read
+// when no still period is found.
+struct StillnessCheck {
+  enum class Test { None, Acceleration, Field, Glrt, GyroWindow, GyroStretch, ForceSteadiness, Depth };
+  Test test = Test::None;
+  double statistic = 0;  // SI units: m/s^2, uT, rad/s, m (the GLRT's is dimensionless)
+  double limit = 0;
+  double ratio() const { return limit > 0 ? statistic / limit : 0.0; }
+};
+const char* test_name(StillnessCheck::Test test);
+
+// Which test kept the detector from a still period over a stretch of data: each failing sample's
+// binding test is counted; the one counted most is the answer, shown at its closest approach.
+class StillnessTally {
+ public:
+  void add(const StillnessCheck& check);
+  void clear() { *this = StillnessTally(); }
+  // The most frequent failing test at its smallest statistic/limit; Test::None when none failed.
+  StillnessCheck most_frequent() const;
+
+ private:
+  static constexpr int kTests = 8;
+  std::uint64_t count_[kTests] = {};
+  StillnessCheck closest_[kTests];
+};
+
 struct StillnessState {
   bool still = false;    // confirmed still period in progress (this sample included)
   bool started = false;  // confirmed at this sample
@@ -73,6 +100,10 @@ class StillnessDetector {
   void configure(const StillnessConfig& config) { config_ = config; reset(); }
   const StillnessConfig& config() const { return config_; }
   void set_noise(double sigma_a, double sigma_w) { config_.sigma_a = sigma_a; config_.sigma_w = sigma_w; }
+  void set_depth_tolerance(double tol_m) { config_.depth_tol_m = tol_m; }
+  // The test furthest from passing at the last sample (entry thresholds); Test::None before the
+  // window holds kMinWindowSamples readings.
+  StillnessCheck binding_check(double extra_gyro_tol) const;
   StillnessState update(const StillnessInput& in);
   // Forgets the window and any period (after a gap or a saturated sample).
   void reset();
@@ -129,6 +160,7 @@ class StillnessDetector {
   Eigen::Vector3d window_f_mean_ = Eigen::Vector3d::Zero();
   double window_w_mean_norm_ = 0, window_gyro_allowance_ = 0, window_b_dev_ = 0;
   double last_statistic_ = 0;
+  std::optional<double> last_depth_range_;
 };
 
 }  // namespace plumb::strapdown

@@ -1,0 +1,66 @@
+#include "plumb/strapdown/noise_floor.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace plumb::strapdown {
+
+namespace {
+
+// Per-axis standard deviation of one sample about the block mean, pooled over the three axes.
+double pooled_sd(const Eigen::Vector3d& sum, double sum_sq, double n) {
+  return std::sqrt(std::max(0.0, (sum_sq - sum.squaredNorm() / n) / (3.0 * (n - 1.0))));
+}
+
+}  // namespace
+
+void NoiseFloor::add(double t, const Eigen::Vector3d& f, const Eigen::Vector3d& w, std::optional<double> depth) {
+  if (block_.n == 0) block_.t0 = t;
+  block_.n += 1;
+  block_.f += f;
+  block_.w += w;
+  block_.ff += f.squaredNorm();
+  block_.ww += w.squaredNorm();
+  if (block_.n >= kBlockSamples && t - block_.t0 >= kBlockSeconds) {
+    // A low quantile of sample standard deviations lies below the true one by about z / sqrt(2 dof)
+    // of it (dof = 3 (n - 1), pooled over three axes): taken back here.
+    const double low = 1.0 - kQuantileZ / std::sqrt(6.0 * (block_.n - 1.0));
+    accel_blocks_.push_back(pooled_sd(block_.f, block_.ff, block_.n) / low);
+    gyro_blocks_.push_back(pooled_sd(block_.w, block_.ww, block_.n) / low);
+    block_ = Sums();
+  }
+  // A depth report is a row whose depth differs from the row before, or the first after rows
+  // without one: a held report repeats on every row until the next comes. Reports that repeat
+  // exactly (a still tool, quantized) are not counted, which errs towards more noise. The second
+  // difference of successive reports cancels a steady rate of penetration; white noise gives it
+  // a variance of 6 sigma^2.
+  if (!depth) {
+    last_row_had_depth_ = false;
+    return;
+  }
+  const bool report = !last_row_had_depth_ || reports_.empty() || *depth != reports_.back();
+  last_row_had_depth_ = true;
+  if (!report) return;
+  if (reports_.size() == 2) {
+    if (depth_terms_ == 0) depth_t0_ = t;
+    const double d2 = *depth - 2.0 * reports_[1] + reports_[0];
+    depth_sq_ += d2 * d2;
+    depth_terms_ += 1;
+    if (depth_terms_ >= 3 && t - depth_t0_ >= kDepthBlockSeconds) {
+      depth_blocks_.push_back(std::sqrt(depth_sq_ / depth_terms_ / 6.0));
+      depth_sq_ = depth_terms_ = 0;
+    }
+    reports_.erase(reports_.begin());
+  }
+  reports_.push_back(*depth);
+}
+
+std::optional<double> NoiseFloor::floor_of(const std::vector<double>& blocks, std::size_t min_blocks) {
+  if (blocks.size() < min_blocks) return std::nullopt;
+  std::vector<double> sorted(blocks);
+  const auto k = static_cast<std::ptrdiff_t>(kQuantile * static_cast<double>(sorted.size() - 1));
+  std::nth_element(sorted.begin(), sorted.begin() + k, sorted.end());
+  return sorted[static_cast<std::size_t>(k)];
+}
+
+}  // namespace plumb::strapdown

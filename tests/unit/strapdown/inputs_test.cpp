@@ -1,0 +1,195 @@
+// The navigator on inputs plumb's presets did not describe: a sensor noisier than its grade, depth
+// with centimetres of noise as rigs report it (held at 1 Hz, quantized, or only on the rows of a
+// report), and runs that cannot align, which must say why instead of waiting in silence.
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "drilling_support.hpp"
+#include "plumb/strapdown/noise_floor.hpp"
+
+namespace plumb::strapdown::test {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// What a user of a MEMS tool who knows only its grade gives: no noise figures.
+estimator::Parameters grade_only(const sim::DrillingScenario& s, const char* grade) {
+  estimator::Parameters p = parameters_for(s);
+  for (const char* stated : {"gyro_arw_deg_rt_h", "accel_vrw_mps_rt_h", "gyro_bias_dph", "accel_bias_mg"}) p.erase(stated);
+  p["imu_grade"] = grade;
+  return p;
+}
+
+TEST(NoiseFloor, ReadsTheStillStretchThroughLaterMotion) {
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  const double rate = 100, sigma_a = 0.03, sigma_w = 2e-3, sigma_d = 0.02;
+  NoiseFloor floor;
+  double held_depth = 10.0;
+  for (int k = 0; k < 120 * 100; ++k) {
+    const double t = k / rate;
+    const bool drilling = t > 40;
+    // Drilling: rotation at 60 rpm with stick-slip and 2 m/s^2 of vibration, depth advancing.
+    const double spin = drilling ? 2 * kPi * (1 + 0.5 * std::sin(t)) : 0.0;
+    const Eigen::Vector3d vib = drilling ? Eigen::Vector3d(2 * unit(rng), 2 * unit(rng), 0.5 * unit(rng)) : Eigen::Vector3d::Zero();
+    const Eigen::Vector3d f = Eigen::Vector3d(0, 0, -9.81) + vib + sigma_a * Eigen::Vector3d(unit(rng), unit(rng), unit(rng));
+    const Eigen::Vector3d w = Eigen::Vector3d(0, 0, spin) + sigma_w * Eigen::Vector3d(unit(rng), unit(rng), unit(rng));
+    // The rig reports once a second, rounded to 1 cm, and the logger holds it.
+    if (k % 100 == 0) held_depth = std::round(((drilling ? 10.0 + 0.05 * (t - 40) : 10.0) + sigma_d * unit(rng)) * 100) / 100;
+    floor.add(t, f, w, held_depth);
+  }
+  ASSERT_TRUE(floor.accel_sd() && floor.gyro_sd() && floor.depth_sd());
+  EXPECT_NEAR(*floor.accel_sd(), sigma_a, 0.1 * sigma_a);
+  EXPECT_NEAR(*floor.gyro_sd(), sigma_w, 0.1 * sigma_w);
+  // Rounding adds 0.3 cm of noise; twelve blocks of a few reports each: a third either way.
+  EXPECT_NEAR(*floor.depth_sd(), std::hypot(sigma_d, 0.01 / std::sqrt(12.0)), 0.35 * sigma_d);
+}
+
+// A MEMS package three times noisier than the `mems` preset, with only imu_grade=mems given: the
+// detector takes its limits from the data, aligns, and finds every connection.
+TEST(StrapdownInputs, SensorNoisierThanItsPresetAligns) {
+  sim::ImuGrade noisy = sim::ImuGrade::mems();
+  noisy.accel_vrw_mps_rt_h *= 3;
+  noisy.gyro_arw_deg_rt_h *= 1.5;
+  for (double rate : {100.0, 10.0}) {
+    const auto scenario = sim::DrillingScenario::reference(noisy, rate, 3);
+    std::map<std::string, std::uint64_t> counters;
+    const RunMetrics m = run_drilling(scenario, grade_only(scenario, "mems"), true, &counters);
+    print(("noisy mems, grade only " + std::to_string(static_cast<int>(rate)) + " Hz").c_str(), m);
+    EXPECT_GT(m.valid_rows, 850u) << rate;  // 10 Hz: 25 s of blocks before the noise is known
+    EXPECT_EQ(counters.at("still_periods"), 5u) << rate;  // alignment + four connections
+    EXPECT_LE(m.max_attitude_err_deg(), 0.5) << rate;
+    EXPECT_LE(m.end_position_pct(), 1.0) << rate;
+    EXPECT_LT(m.rms_z(), 1.5) << rate;  // the noise the filter took from the data is not too small
+  }
+}
+
+// Depth with centimetres of noise, rounded to 0.1 ft, stated or not: the depth test's limit
+// follows the noise (with the old fixed 1 cm no still period was ever found).
+TEST(StrapdownInputs, NoisyRigDepthAligns) {
+  for (double sd : {0.02, 0.05}) {
+    for (bool stated : {true, false}) {
+      auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 100, 4);
+      scenario.depth.sigma_m = sd;
+      scenario.depth.quantum_m = 0.03048;
+      estimator::Parameters p = parameters_for(scenario);
+      if (stated) p["depth_sd_m"] = std::to_string(std::hypot(sd, 0.03048 / std::sqrt(12.0)));
+      std::map<std::string, std::uint64_t> counters;
+      const RunMetrics m = run_drilling(scenario, p, true, &counters);
+      const std::string label = "depth sd " + std::to_string(sd) + (stated ? " stated" : " measured");
+      print(label.c_str(), m);
+      EXPECT_GT(m.valid_rows, 900u) << label;
+      EXPECT_GE(counters.at("still_periods"), 5u) << label;
+      EXPECT_LE(m.max_attitude_err_deg(), 0.2) << label;
+      EXPECT_LE(m.end_position_pct(), 1.0) << label;
+    }
+  }
+}
+
+// Depth as a rig delivers it: a report a second, 2 cm of noise, rounded to 1 cm, either held on
+// every row or written only on the row after each report (the rows between have no depth).
+TEST(StrapdownInputs, RigDepthHeldOrOnlyOnReportRows) {
+  for (bool sparse : {false, true}) {
+    const auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 100, 5);
+    sim::DrillingSimulator simulator(scenario);
+    std::vector<TruthSample> truth;
+    std::vector<Sample> samples = simulator.run(&truth);
+    std::mt19937_64 rng(11);
+    std::normal_distribution<double> noise(0.0, 0.02);
+    double report = 0;
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+      const bool new_report = k % 100 == 0;
+      if (new_report) report = std::round((samples[k].depth_m + noise(rng)) * 100) / 100;
+      samples[k].depth_m = report;
+      if (sparse && !new_report) samples[k].flags &= ~flags::kHasDepth;
+    }
+    estimator::Parameters p = parameters_for(scenario);
+    p["depth_sd_m"] = "0.02";
+    Navigator nav(parse_parameters(p));
+    std::vector<Estimate> rows;
+    for (const Sample& s : samples) nav.push(s, rows);
+    nav.flush(rows);
+    ASSERT_TRUE(nav.aligned()) << sparse;
+    EXPECT_EQ(nav.counters().at("still_periods"), 5u) << sparse;
+    const auto& last = rows.back();
+    ASSERT_TRUE(last.valid && last.navigation);
+    const TruthSample& tr = truth.back();
+    const auto& p_end = last.navigation->position_m;
+    const double err = std::hypot(p_end[0] - tr.north_m, p_end[1] - tr.east_m, p_end[2] - tr.down_m);
+    std::printf("rig depth %s: end position %.3f m of %.1f m drilled\n", sparse ? "sparse" : "held", err,
+                simulator.trajectory().drilled_length_m());
+    EXPECT_LE(err, 0.01 * simulator.trajectory().drilled_length_m()) << sparse;
+  }
+}
+
+std::vector<Sample> turning_from_the_start(double seconds, double accel_noise) {
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  std::vector<Sample> out;
+  for (int k = 0; k < seconds * 100; ++k) {
+    Sample s;
+    s.t = k / 100.0;
+    const double angle = 0.5 * s.t;
+    s.f = Eigen::Vector3d(accel_noise * unit(rng), accel_noise * unit(rng), -9.80665 + accel_noise * unit(rng));
+    s.w = Eigen::Vector3d(0, 0, 0.5);
+    s.b = Eigen::Vector3d(20 * std::cos(angle), -20 * std::sin(angle), 40);
+    s.flags = flags::kHasGyro;
+    out.push_back(s);
+  }
+  return out;
+}
+
+struct Heard {
+  std::vector<std::string> notices;
+  std::vector<Estimate> rows;
+};
+
+Heard navigate(const std::vector<Sample>& samples, const estimator::Parameters& p) {
+  Navigator nav(parse_parameters(p));
+  Heard h;
+  for (const Sample& s : samples) {
+    nav.push(s, h.rows);
+    for (auto& text : nav.take_notices()) h.notices.push_back(text);
+  }
+  nav.flush(h.rows);
+  return h;
+}
+
+// Never silent: a run that cannot align says so once, after notice_after_s of data, naming the
+// test that fails, its statistic against its limit and the parameter that sets the limit; its
+// rows say it too.
+TEST(StrapdownInputs, RunThatCannotAlignSaysWhy) {
+  {
+    const Heard h = navigate(turning_from_the_start(100, 0.001), {{"latitude_deg", "45"}});
+    ASSERT_EQ(h.notices.size(), 1u);
+    EXPECT_NE(h.notices[0].find("not aligned after 60 s"), std::string::npos) << h.notices[0];
+    EXPECT_NE(h.notices[0].find("gyro"), std::string::npos) << h.notices[0];
+    EXPECT_NE(h.notices[0].find("still_gyro_tol_dph"), std::string::npos) << h.notices[0];
+    EXPECT_NE(h.rows.back().reason.find("not aligned: no still period (gyro"), std::string::npos) << h.rows.back().reason;
+    EXPECT_LE(h.rows.back().reason.size(), 63u);  // the attitude topic's bound
+  }
+  {
+    // Still, but the accelerometers are 20x noisier than stated (0.03 m/s/sqrt(h) at 100 Hz is
+    // 0.005 m/s^2 per sample; these read 0.1).
+    std::vector<Sample> still = turning_from_the_start(80, 0.1);
+    for (Sample& s : still) s.w.setZero();
+    const Heard h = navigate(still, {{"latitude_deg", "45"}, {"accel_vrw_mps_rt_h", "0.03"}, {"still_accel_tol", "0.05"}});
+    ASSERT_EQ(h.notices.size(), 1u);
+    EXPECT_NE(h.notices[0].find("set by the accelerometer noise, 0.005 m/s^2 per sample, as stated in accel_vrw_mps_rt_h"),
+              std::string::npos)
+        << h.notices[0];
+    // Unstated, the same data align: the limits come from the noise they show.
+    const Heard measured = navigate(still, {{"latitude_deg", "45"}});
+    ASSERT_FALSE(measured.rows.empty());
+    EXPECT_TRUE(measured.rows.back().valid) << measured.rows.back().reason;
+    ASSERT_FALSE(measured.notices.empty());
+    EXPECT_NE(measured.notices[0].find("(measured)"), std::string::npos) << measured.notices[0];
+  }
+}
+
+}  // namespace
+}  // namespace plumb::strapdown::test
