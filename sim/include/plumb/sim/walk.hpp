@@ -30,7 +30,7 @@
 #include <Eigen/Core>
 
 #include "plumb/core/sample.hpp"
-#include "plumb/sim/drilling.hpp"
+#include "plumb/sim/imu_model.hpp"
 
 namespace plumb::sim {
 
