@@ -74,7 +74,7 @@ void add_scenario_options(CLI::App& app, ScenarioOptions& o) {
   app.add_option("--rate-hz", o.rate_hz, "sample rate, Hz (drilling: the IMU rate, default 100; walk: default 400)")->capture_default_str();
   auto* duration = app.add_option("--duration", o.duration_s, "record length, s")->capture_default_str();
   app.add_option("--count", o.count, "number of samples (instead of --duration)")->excludes(duration);
-  auto* snr_a = app.add_option("--snr-accel", o.snr_accel, "accelerometer SNR, dB (CONVENTIONS.md); default: no noise (reference preset: 20)");
+  auto* snr_a = app.add_option("--snr-accel", o.snr_accel, "accelerometer SNR, dB (docs/conventions.md); default: no noise (reference preset: 20)");
   auto* snr_m = app.add_option("--snr-mag", o.snr_mag, "magnetometer SNR, dB; default: no noise (reference preset: 20)");
   app.add_option("--sigma-accel", o.sigma_accel, "accelerometer noise sigma, m/s^2")->excludes(snr_a);
   app.add_option("--sigma-mag", o.sigma_mag, "magnetometer noise sigma, uT (drilling and walk default 0.1)")->excludes(snr_m);

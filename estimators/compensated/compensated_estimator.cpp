@@ -1,5 +1,5 @@
-// `compensated`: the integral algorithm without its systematic error (METHODS.md section 1).
-// Instead of the small-angle ratio it evaluates the exact closed form of CONVENTIONS.md on the
+// `compensated`: the integral algorithm without its systematic error (docs/methods.md section 1).
+// Instead of the small-angle ratio it evaluates the exact closed form of docs/conventions.md on the
 // platform-rotation invariants. With the radial gravity Gx + iGy = c e^{-i phi} and the radial field
 // Bx - iBy = d e^{i phi} demodulated against the tracked platform angle phi, the radial field in the
 // frame of the gravity high side is (u, v) = |d| (cos alpha, sin alpha), alpha = T - M, and

@@ -1,4 +1,4 @@
-// `integral`: the source paper's dynamic algorithm (METHODS.md section 1). The sensor products
+// `integral`: the source paper's dynamic algorithm (docs/methods.md section 1). The sensor products
 // P1 = Gx By - Gy Bx and P2 = Gx Bx + Gy By are integrated over the largest whole number of platform
 // revolutions in the window (which also cancels constant radial sensor biases) and the azimuth
 // comes from their ratio in the small-angle form A' = atan2(P1, -P2). Since P1 = g sinI Bh sinA

@@ -1,4 +1,4 @@
-// A drilling run for the strapdown navigator (shared METHODS.md section 4, CONVENTIONS.md
+// A drilling run for the strapdown navigator (docs/methods.md section 4, docs/conventions.md
 // "Navigation"): the tool advances along its own z axis while building and turning, sliding
 // (toolface fixed) or rotary (toolface turning), and stands perfectly still for pipe connections.
 // Gyros, accelerometers, magnetometers and the rig's measured depth are exact functions of one

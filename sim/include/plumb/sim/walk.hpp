@@ -2,7 +2,7 @@
 // zero-velocity-update navigator (issue 18, "Accuracy"), also how users check a gyro tool on the
 // surface. The foot swings from footprint to footprint and stands perfectly still on each one.
 //
-// Mounting (CONVENTIONS.md frames): the tool z axis points forward along the foot, the tool x axis
+// Mounting (docs/conventions.md frames): the tool z axis points forward along the foot, the tool x axis
 // up out of the instep, the tool y axis to the right of the foot. With the foot's heading psi,
 // pitch theta (toes up positive) and roll phi (right side down positive) this gives exactly
 //   C_n^b = R3(phi) R2(90 deg + theta) R3(psi):  I = 90 deg + theta, A = psi, T = phi,

@@ -1,5 +1,5 @@
 // Side-by-side comparison of estimator plugins on simulated data (issue 3, `plumb compare`).
-// A grid of cases (inclination x speed x accelerometer SNR; the reference grid of CONVENTIONS.md by
+// A grid of cases (inclination x speed x accelerometer SNR; the reference grid of docs/conventions.md by
 // default) is swept over azimuth with several Monte Carlo seeds per azimuth; each record is one
 // estimator window. Per case and plugin: RMS and maximum azimuth and inclination errors beside the
 // Cramer-Rao bound, and the error per azimuth (for the paper-style plot).

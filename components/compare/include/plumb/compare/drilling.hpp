@@ -1,6 +1,6 @@
 // `plumb compare --scenario drilling`: drilling runs from the simulator (sim/drilling.hpp) through
 // a navigator plugin (strapdown), errors against the exact truth over the whole run, beside the
-// figures the source reports for its gyro inclinometer (METHODS.md section 4).
+// figures the source reports for its gyro inclinometer (docs/methods.md section 4).
 #pragma once
 
 #include <cstdint>

@@ -17,7 +17,7 @@ namespace plumb::windowed {
 using estimator::ParameterReader;
 
 // What a reference learnt from the data must look like: the Earth (gravity 9.78-9.83 m/s^2, the
-// CONVENTIONS.md reference scenario's 10 included; total field 22-67 uT), with some margin.
+// docs/conventions.md reference scenario's 10 included; total field 22-67 uT), with some margin.
 inline constexpr double kEarthGravityMin = 9.7, kEarthGravityMax = 10.1;  // m/s^2
 inline constexpr double kEarthFieldMin = 20, kEarthFieldMax = 70;         // uT
 
