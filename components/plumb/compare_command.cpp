@@ -65,7 +65,7 @@ compare::ProgressCallback progress_printer() {
   };
 }
 
-// The navigator on the simulator's drilling runs (issue 8): per run, errors beside the source's figures.
+// The navigator on the simulator's drilling runs: per run, errors beside the source's figures.
 int run_drilling(const CompareOptions& o, bool estimators_given) {
   compare::DrillingCompareConfig c;
   if (estimators_given) {

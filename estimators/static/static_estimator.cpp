@@ -69,7 +69,7 @@ class StaticEstimator final : public WindowedEstimator {
     e.toolface_valid = cf.toolface_valid;
     e.reason = cf.reason;
 
-    // Standard deviations (issue 14): the means' noise propagated through the closed form itself
+    // Standard deviations: the means' noise propagated through the closed form itself
     // at this attitude (its Jacobian by central differences), for inclination, azimuth and toolface.
     if (cf.valid) {
       Eigen::VectorXd x(6), var(6);

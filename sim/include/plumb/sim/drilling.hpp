@@ -60,7 +60,7 @@ struct DrillingPlan {
   std::vector<DrillSegment> segments;
 };
 
-// A magnetic disturbance during one stop (issue 18): |B| and dip shifted while the tool stands.
+// A magnetic disturbance during one stop: |B| and dip shifted while the tool stands.
 struct MagneticDisturbance {
   std::size_t stop_index = 0;    // 0 = first Stop segment of the plan (the alignment is not a stop)
   double delta_total_uT = 0;
@@ -96,7 +96,7 @@ struct DrillingScenario {
   Vibration vibration;           // lateral, added to f while drilling only, scaled by the speed ramp
   std::uint64_t seed = 1;
 
-  // Issue 8's accuracy case: 16 min = 60 s alignment, then four drilling segments of 165 s
+  // The navigator's accuracy case: 16 min = 60 s alignment, then four drilling segments of 165 s
   // (8 m each at 0.05 m/s: sliding with build, rotary at 30 rpm, sliding with build and turn,
   // rotary with turn) each followed by a 60 s pipe connection; I 85 -> ~89 deg, A 30 -> ~28 deg;
   // latitude 35 deg, B 50 uT, dip 60 deg, g 9.80665; magnetometer noise 0.1 uT; no vibration.

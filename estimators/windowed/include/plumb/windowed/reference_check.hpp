@@ -1,4 +1,4 @@
-// Issue 17 item 3 and issue 14 item 3: an estimate is only as good as the assumptions behind it.
+// An estimate is only as good as the assumptions behind it.
 // Every windowed plugin compares the window's |G|, |B| and dip with a reference (parameters, or
 // learnt from the first window that looks like the Earth) and refuses, with the reason and
 // standard deviations of 0 (unknown), what departs beyond the stated tolerance; and it clears the
