@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
   app.add_option("--procedure", o.procedure, "6pos | 24pos | lsq | mag")
       ->check(CLI::IsMember({"6pos", "24pos", "lsq", "mag"}))
       ->capture_default_str();
-  app.add_option("--input", o.input, "offline: sensor CSV of raw outputs (CONVENTIONS.md columns)");
+  app.add_option("--input", o.input, "offline: sensor CSV of raw outputs (docs/conventions.md columns)");
   app.add_option("--stations", o.stations,
                  "offline: station list CSV: name,start_s,end_s,orientation[,run][,ref_temp_c] (docs/calibration.md)");
   app.add_option("--output", o.output, "coefficients file to write (only on success)");

@@ -37,7 +37,7 @@ void SimulatedTurntable::run() {
     if ((want != current || refusals != corrections) && want >= 0 && want < static_cast<int>(plans_.size())) {
       auto plan = plans_[static_cast<std::size_t>(want)];
       if (want + 1 == options_.sim_misplace && current != want) {
-        // The operator's mistake of issue 17: z pointing down whatever was asked (upside down if z
+        // A new operator's usual mistake: z pointing down whatever was asked (upside down if z
         // down was asked).
         plan.inclination_deg = plan.inclination_deg < 1 ? 180 : 0;
         plan.toolface_deg = 0;

@@ -1,4 +1,4 @@
-// Writes DIR/sensor.csv and DIR/truth.csv (CONVENTIONS.md "Files") instead of publishing.
+// Writes DIR/sensor.csv and DIR/truth.csv (docs/conventions.md "Files") instead of publishing.
 #pragma once
 
 #include <fstream>

@@ -50,10 +50,10 @@ void require(bool ok, const std::string& message) {
 void add_scenario_options(CLI::App& app, ScenarioOptions& o) {
   app.add_option("--scenario", o.scenario,
                  "what to simulate: platform (the rotating sensor platform), drilling (a 16-minute drilling run with "
-                 "four pipe connections, issue 8's accuracy case), drilling-survey (stop-and-go rotary drilling "
-                 "with short survey stops) or walk (an IMU on a foot walking a closed loop, issue 18's zero-velocity "
-                 "case: tool z forward along the foot, x up); drilling runs carry gyros, measured depth and truth "
-                 "position, walks gyros and truth position")
+                 "four pipe connections, the navigator's accuracy case), drilling-survey (stop-and-go rotary drilling "
+                 "with short survey stops) or walk (an IMU on a foot walking a closed loop, the classic check of a "
+                 "zero-velocity-update navigator: tool z forward along the foot, x up); drilling runs carry gyros, "
+                 "measured depth and truth position, walks gyros and truth position")
       ->capture_default_str()
       ->check(CLI::IsMember({"platform", "drilling", "drilling-survey", "walk"}));
   app.add_option("--preset", o.preset, "start from: default, or reference (the paper's case: g 10, B 48.4 uT, dip 45.5, "
@@ -74,7 +74,7 @@ void add_scenario_options(CLI::App& app, ScenarioOptions& o) {
   app.add_option("--rate-hz", o.rate_hz, "sample rate, Hz (drilling: the IMU rate, default 100; walk: default 400)")->capture_default_str();
   auto* duration = app.add_option("--duration", o.duration_s, "record length, s")->capture_default_str();
   app.add_option("--count", o.count, "number of samples (instead of --duration)")->excludes(duration);
-  auto* snr_a = app.add_option("--snr-accel", o.snr_accel, "accelerometer SNR, dB (CONVENTIONS.md); default: no noise (reference preset: 20)");
+  auto* snr_a = app.add_option("--snr-accel", o.snr_accel, "accelerometer SNR, dB (docs/conventions.md); default: no noise (reference preset: 20)");
   auto* snr_m = app.add_option("--snr-mag", o.snr_mag, "magnetometer SNR, dB; default: no noise (reference preset: 20)");
   app.add_option("--sigma-accel", o.sigma_accel, "accelerometer noise sigma, m/s^2")->excludes(snr_a);
   app.add_option("--sigma-mag", o.sigma_mag, "magnetometer noise sigma, uT (drilling and walk default 0.1)")->excludes(snr_m);
@@ -109,7 +109,7 @@ void add_scenario_options(CLI::App& app, ScenarioOptions& o) {
   app.add_option("--depth-step", o.depth_step, "drilling: measured-depth reading step, m (0: none)");
   app.add_option("--walk-length", o.walk_length,
                  "walk: length of the closed loop, m (a rectangle, long sides twice the short ones); 25 (flat) and "
-                 "60 (with 3 m of stairs up and back down) are issue 18's cases")
+                 "60 (with 3 m of stairs up and back down) are the navigator's test walks")
       ->capture_default_str();
   app.add_option("--walk-climb", o.walk_climb,
                  "walk: height of the flight of stairs on the first long side, walked back down on the other, m "

@@ -65,7 +65,7 @@ compare::ProgressCallback progress_printer() {
   };
 }
 
-// The navigator on the simulator's drilling runs (issue 8): per run, errors beside the source's figures.
+// The navigator on the simulator's drilling runs: per run, errors beside the source's figures.
 int run_drilling(const CompareOptions& o, bool estimators_given) {
   compare::DrillingCompareConfig c;
   if (estimators_given) {
@@ -153,7 +153,7 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("-e,--estimator,--plugin", o->estimators, "plugins to compare (--plugin, as for plumb-estimator, is the same)")->capture_default_str();
   cmd->add_option("--inclination", o->inclinations, "inclinations, deg")->capture_default_str();
   cmd->add_option("--rpm", o->rpms, "platform speeds, rpm")->capture_default_str();
-  cmd->add_option("--snr-accel", o->snr_accel, "accelerometer SNRs, dB (CONVENTIONS.md)")->capture_default_str();
+  cmd->add_option("--snr-accel", o->snr_accel, "accelerometer SNRs, dB (docs/conventions.md)")->capture_default_str();
   cmd->add_option("--snr-mag", o->snr_mag, "magnetometer SNR, dB")->capture_default_str();
   cmd->add_option("--azimuth", o->azimuths, "azimuths, deg (default 0, 10, ..., 350)");
   cmd->add_option("--seeds", o->seeds, "Monte Carlo records per azimuth")->capture_default_str();

@@ -1,5 +1,5 @@
 // The CSV that plumb topic echo --csv and plumb export print: sensor batches as the sensor CSV of
-// CONVENTIONS.md, any other message as its flattened fields.
+// docs/conventions.md, any other message as its flattened fields.
 #pragma once
 
 #include <ostream>
@@ -53,7 +53,7 @@ inline std::string csv_escape(const std::string& s) {
   return out + "\"";
 }
 
-// Sensor batches as the sensor CSV of CONVENTIONS.md (t, fx..bz, then gyros and temperature when the
+// Sensor batches as the sensor CSV of docs/conventions.md (t, fx..bz, then gyros and temperature when the
 // first batch carries them): a capture replays (plumb-bridge --replay) and estimates offline
 // (plumb estimate) as it is.
 class SensorCsvWriter {

@@ -1,4 +1,4 @@
-// plumb export: one recorded topic as CSV in the formats of CONVENTIONS.md: a sensor topic as the
+// plumb export: one recorded topic as CSV in the formats of docs/conventions.md: a sensor topic as the
 // sensor CSV (plumb estimate and plumb-bridge --replay read it), an attitude topic as the attitude
 // CSV, the truth as the truth CSV; any other topic as its flattened fields (as topic echo --csv).
 #include <fstream>
@@ -111,7 +111,7 @@ int run_export(const ExportOptions& o) {
 
 void add_export_command(CLI::App& app) {
   auto o = std::make_shared<ExportOptions>();
-  auto* cmd = app.add_subcommand("export", "Write one topic of an MCAP recording as CSV (the formats of CONVENTIONS.md)");
+  auto* cmd = app.add_subcommand("export", "Write one topic of an MCAP recording as CSV (the formats of docs/conventions.md)");
   cmd->add_option("file", o->input, "the recording (.mcap)")->required();
   cmd->add_option("-t,--topic", o->topic, "topic to export (default: plumb/sensor/calibrated, else plumb/sensor/raw)");
   cmd->add_option("-o,--output", o->output, "CSV file to write (default: standard output)");

@@ -135,7 +135,7 @@ void add_survey_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("survey", "Survey offline: stations at the stops, QC, minimum curvature, uncertainty; "
                                            "survey CSV and SVG plot (docs/surveys.md)");
   cmd->add_option("-i,--input", o->sensor, "sensor CSV with depth_m (or with --pipe-length), run through --estimator");
-  cmd->add_option("--attitude", o->attitude, "attitude CSV (CONVENTIONS.md), with --depth or --pipe-length");
+  cmd->add_option("--attitude", o->attitude, "attitude CSV (docs/conventions.md), with --depth or --pipe-length");
   cmd->add_option("--depth", o->depth, "depth log CSV: t,depth_m[,depth_sd_m] on the attitude's clock");
   cmd->add_option("--stations", o->stations, "station list CSV: md_m,inclination_deg,azimuth_deg (magnetic) and "
                                              "optional sigmas and measured field");

@@ -1,4 +1,4 @@
-// The inputs of `plumb survey`: an attitude CSV (CONVENTIONS.md) with a depth log, or a station
+// The inputs of `plumb survey`: an attitude CSV (docs/conventions.md) with a depth log, or a station
 // list; each row checked, a bad one an error naming file, line and column.
 #pragma once
 

@@ -250,7 +250,7 @@ void add_topic_commands(CLI::App& app) {
   components::add_transport_options(*echo, o->transport);
   echo->add_option("topic", o->topic, "topic name, e.g. plumb/attitude/compensated")->required();
   echo->add_flag("--csv", o->csv,
-                 "print CSV: a header, then one row per message; sensor topics give the sensor CSV of CONVENTIONS.md "
+                 "print CSV: a header, then one row per message; sensor topics give the sensor CSV of docs/conventions.md "
                  "(t,fx,fy,fz,bx,by,bz[,wx,wy,wz][,temp_c]), which plumb estimate and plumb-bridge --replay read");
   echo->add_option("--count", o->count, "exit after this many messages (exit 1 if fewer arrive)");
   echo->add_option("--timeout", o->timeout_s, "give up after this many seconds (exit 1 if nothing arrived)");

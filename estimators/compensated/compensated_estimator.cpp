@@ -1,5 +1,5 @@
-// `compensated`: the integral algorithm without its systematic error (METHODS.md section 1).
-// Instead of the small-angle ratio it evaluates the exact closed form of CONVENTIONS.md on the
+// `compensated`: the integral algorithm without its systematic error (docs/methods.md section 1).
+// Instead of the small-angle ratio it evaluates the exact closed form of docs/conventions.md on the
 // platform-rotation invariants. With the radial gravity Gx + iGy = c e^{-i phi} and the radial field
 // Bx - iBy = d e^{i phi} demodulated against the tracked platform angle phi, the radial field in the
 // frame of the gravity high side is (u, v) = |d| (cos alpha, sin alpha), alpha = T - M, and
@@ -85,7 +85,7 @@ class CompensatedEstimator final : public WindowedEstimator {
     const double field_phase = std::arg(dm.field);       // M - phi
     e.magnetic_toolface_deg = wrap_deg_360((phi_end + field_phase) / kDeg);
 
-    // Standard deviations (issue 14): the window's own noise propagated through the formulas
+    // Standard deviations: the window's own noise propagated through the formulas
     // above at this attitude. Inputs c, d (per component), mean Gz, mean Bz; their noises are
     // independent (different sensor axes). A common error of the platform angle phi turns c and d
     // oppositely and cancels in alpha, so the field's tangential noise enters alpha as the mean of

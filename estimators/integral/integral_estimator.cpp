@@ -1,4 +1,4 @@
-// `integral`: the source paper's dynamic algorithm (METHODS.md section 1). The sensor products
+// `integral`: the source paper's dynamic algorithm (docs/methods.md section 1). The sensor products
 // P1 = Gx By - Gy Bx and P2 = Gx Bx + Gy By are integrated over the largest whole number of platform
 // revolutions in the window (which also cancels constant radial sensor biases) and the azimuth
 // comes from their ratio in the small-angle form A' = atan2(P1, -P2). Since P1 = g sinI Bh sinA
@@ -142,7 +142,7 @@ class IntegralEstimator final : public WindowedEstimator {
     const double dof = std::max(1.0, n - 1);
     const double var_along = ss_along / dof / n, var_across = ss_across / dof / n;  // of the mean
     const double radial_g_sd = std::sqrt(0.5 * (var_along + var_across));
-    // Standard deviations (issue 14): the window's noise propagated through the formulas used.
+    // Standard deviations: the window's noise propagated through the formulas used.
     // Inclination and toolface from (z, mean Gz); the per-sample products are constant but for
     // noise, so their sample covariance over n gives that of P1, P2 for the azimuth.
     const double var_gz = std::max(0.0, gz2 - n * gz * gz) / dof;

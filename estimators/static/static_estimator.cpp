@@ -1,4 +1,4 @@
-// `static`: the classical closed form of CONVENTIONS.md on the window means of G = -f and B.
+// `static`: the classical closed form of docs/conventions.md on the window means of G = -f and B.
 // Exact for a still platform (and then as good as the data allow: the means are sufficient
 // statistics of a constant in white noise), meaningless while it turns, since averaging rotating
 // radial channels destroys them; so it watches the magnetic toolface and refuses turning windows.
@@ -15,7 +15,7 @@
 namespace plumb::windowed {
 namespace {
 
-// (I, A, T) in radians from x = (mean G, mean B): the closed form of CONVENTIONS.md, as
+// (I, A, T) in radians from x = (mean G, mean B): the closed form of docs/conventions.md, as
 // closed_form_attitude computes it but without its near-vertical cut-off (differentiated here).
 Eigen::Vector3d closed_form_radians(const Eigen::VectorXd& x) {
   const double gx = x[0], gy = x[1], gz = x[2], bx = x[3], by = x[4], bz = x[5];
@@ -69,7 +69,7 @@ class StaticEstimator final : public WindowedEstimator {
     e.toolface_valid = cf.toolface_valid;
     e.reason = cf.reason;
 
-    // Standard deviations (issue 14): the means' noise propagated through the closed form itself
+    // Standard deviations: the means' noise propagated through the closed form itself
     // at this attitude (its Jacobian by central differences), for inclination, azimuth and toolface.
     if (cf.valid) {
       Eigen::VectorXd x(6), var(6);

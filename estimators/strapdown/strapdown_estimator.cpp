@@ -1,4 +1,4 @@
-// `strapdown`: the gyro inclinometer's navigator (METHODS.md section 4, issues 8 and 18) behind
+// `strapdown`: the gyro inclinometer's navigator (docs/methods.md section 4) behind
 // the estimator plugin API. The math lives in the plumb_strapdown library (navigator.hpp).
 #include <memory>
 

@@ -3,7 +3,7 @@
  *
  *   plumb-c-attitude-listener [--domain N] [--count N] [--timeout S] [--interface IF] [TOPIC]
  *
- * What it takes to talk to plumb (see plumb's ARCHITECTURE.md, interoperability rules):
+ * What it takes to talk to plumb (see docs/architecture.md, interoperability rules):
  *  - topic "plumb/attitude/<estimator>", type plumb::msg::Attitude (the idlc output names it so);
  *  - reliable QoS and the XCDR1 data representation (plumb's Fast DDS side reads and writes XCDR1);
  *  - the same domain id and network: plumb keeps to loopback unless given an interface. */

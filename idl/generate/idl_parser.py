@@ -10,7 +10,7 @@ import re
 
 from idl_model import PRIMITIVES, Const, IdlFile, Member, Struct, Topic, Type
 
-# The interoperability rules of ARCHITECTURE.md: every struct in module plumb::msg.
+# The interoperability rules of docs/architecture.md: every struct in module plumb::msg.
 TYPE_MODULE = ["plumb", "msg"]
 
 UNSUPPORTED_KEYWORDS = {
@@ -160,7 +160,7 @@ class Parser:
 
     def check_module(self, scope, what, line):
         if scope != TYPE_MODULE:
-            self.error(f"{what} must be in module {'::'.join(TYPE_MODULE)} (ARCHITECTURE.md), "
+            self.error(f"{what} must be in module {'::'.join(TYPE_MODULE)} (docs/architecture.md), "
                        f"not in '{'::'.join(scope) or 'the global scope'}'", line)
 
     # -- const ---------------------------------------------------------------------------------
@@ -244,9 +244,9 @@ class Parser:
         for annotation, line in annotations:
             if annotation != "final":
                 self.error(f"annotation @{annotation} is outside plumb's IDL subset: every struct is @final, "
-                           "keyless, without @optional (ARCHITECTURE.md interoperability rules)", line)
+                           "keyless, without @optional (docs/architecture.md interoperability rules)", line)
         if "final" not in names:
-            self.error(f"struct {name.text} must be @final (ARCHITECTURE.md interoperability rules)", start.line)
+            self.error(f"struct {name.text} must be @final (docs/architecture.md interoperability rules)", start.line)
         if self.peek().text == ":":
             self.error("struct inheritance is outside plumb's IDL subset")
         scoped = "::".join(scope + [name.text])
@@ -280,7 +280,7 @@ class Parser:
         if annotations:
             annotation, line = annotations[0]
             self.error(f"member annotation @{annotation} is outside plumb's IDL subset "
-                       "(keyless types, no @optional: ARCHITECTURE.md)", line)
+                       "(keyless types, no @optional: docs/architecture.md)", line)
         start = self.peek()
         base = self.type(scope)
         declarators = []

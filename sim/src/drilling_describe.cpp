@@ -1,20 +1,9 @@
-// One readable line per drilling scenario and IMU grade, for the logs of the components.
+// One readable line per drilling scenario, for the logs of the components.
 #include <sstream>
 
 #include "plumb/sim/drilling.hpp"
 
 namespace plumb::sim {
-
-std::string describe(const ImuGrade& g) {
-  std::ostringstream out;
-  out << g.name << " IMU (gyro bias " << g.gyro_bias_deg_h << " deg/h, ARW " << g.gyro_arw_deg_rt_h
-      << " deg/sqrt(h), accel bias " << g.accel_bias_mg << " mg, VRW " << g.accel_vrw_mps_rt_h << " m/s/sqrt(h), ";
-  if (g.gyro_range_deg_s > 0)
-    out << "range " << g.gyro_range_deg_s << " deg/s)";
-  else
-    out << "unlimited range)";
-  return out.str();
-}
 
 std::string describe(const DrillingScenario& s) {
   const DrillingTrajectory trajectory(s.plan);

@@ -1,4 +1,4 @@
-// The named drilling runs (issue 8's accuracy case, a stop-and-go survey run) and the checks of a
+// The named drilling runs (the navigator's 16-minute accuracy case, a stop-and-go survey run) and the checks of a
 // scenario's sensor and environment parameters.
 #include <cmath>
 #include <stdexcept>

@@ -1,11 +1,11 @@
-// The IMU of one simulated run (drilling.hpp ImuModel): biases, noise, clipping, earth rate.
+// The IMU of one simulated run (imu_model.hpp): biases, noise, clipping, earth rate.
 #include <cmath>
 #include <random>
 
 #include <Eigen/Geometry>
 
 #include "plumb/core/attitude.hpp"
-#include "plumb/sim/drilling.hpp"
+#include "plumb/sim/imu_model.hpp"
 
 namespace plumb::sim {
 namespace {

@@ -1,5 +1,5 @@
 // Scenario defaults, the source paper's reference case and the SNR-to-sigma conversion of shared
-// CONVENTIONS.md "Noise and signal-to-noise ratio".
+// docs/conventions.md "Noise and signal-to-noise ratio".
 #include <cmath>
 
 #include "plumb/core/attitude.hpp"

@@ -1,4 +1,4 @@
-// The named walks (issue 18's 25 m and 60 m loops) and the checks of a walk's loop, timing,
+// The named walks (the 25 m and 60 m loops the navigator is checked on) and the checks of a walk's loop, timing,
 // sensors and environment.
 #include <cmath>
 #include <stdexcept>

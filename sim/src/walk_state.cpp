@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "plumb/core/attitude.hpp"
+#include "plumb/sim/drilling.hpp"  // rate_nb
 #include "walk_detail.hpp"
 
 namespace plumb::sim {

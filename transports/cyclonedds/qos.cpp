@@ -19,7 +19,7 @@ QosPtr make_endpoint_qos(const Qos& qos) {
     dds_qset_durability_service(q.get(), 0, qos.history == History::KeepAll ? DDS_HISTORY_KEEP_ALL : DDS_HISTORY_KEEP_LAST,
                                 qos.depth > 0 ? qos.depth : 1, DDS_LENGTH_UNLIMITED, DDS_LENGTH_UNLIMITED,
                                 DDS_LENGTH_UNLIMITED);
-  // Cyclone 0.10 would pick XCDR2 for some types; Fast DDS 2.9 only reads XCDR1 (ARCHITECTURE.md).
+  // Cyclone 0.10 would pick XCDR2 for some types; Fast DDS 2.9 only reads XCDR1 (docs/architecture.md).
   const dds_data_representation_id_t xcdr1[] = {DDS_DATA_REPRESENTATION_XCDR1};
   dds_qset_data_representation(q.get(), 1, xcdr1);
   return q;

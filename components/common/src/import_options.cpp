@@ -14,7 +14,7 @@ void add_import_options(CLI::App& app, ImportOptions& o) {
                  "time s|ms|us|ns, depth m|ft (default: m/s2, rad/s, uT, s, m), e.g. accel=g,gyro=deg/s,mag=gauss")
       ->option_text("GROUP=UNIT,...");
   app.add_option("--axes", o.axes,
-                 "the sensor axes in the tool frame (CONVENTIONS.md: z down-hole, right-handed), for f, b and w: "
+                 "the sensor axes in the tool frame (docs/conventions.md: z down-hole, right-handed), for f, b and w: "
                  "a signed permutation such as x,-y,-z (tool x = sensor x, tool y = -sensor y, tool z = -sensor z) "
                  "or the rotation's nine numbers \"r11 r12 r13 r21 r22 r23 r31 r32 r33\" (tool = R sensor); "
                  "default x,y,z")

@@ -12,7 +12,7 @@ namespace plumb::calibration::detail {
 
 namespace {
 
-// Reference field for the azimuth (CONVENTIONS.md reference scenario): the accelerometer
+// Reference field for the azimuth (docs/conventions.md reference scenario): the accelerometer
 // procedures do not touch the magnetometers, so only G moves the azimuth here.
 constexpr double kTotalB = 48.4;
 constexpr double kDipDeg = 45.5;

@@ -1,4 +1,4 @@
-// METHODS.md 3: six-position calibration of the accelerometers.
+// docs/methods.md section 3: six-position calibration of the accelerometers.
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -1,4 +1,4 @@
-// Station averaging that waits for the readings to settle (METHODS.md 2: "read repeatedly until
+// Station averaging that waits for the readings to settle (docs/methods.md section 2: "read repeatedly until
 // the last readings repeat, at least three times").
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // The temperature model of the 24-position procedure in the sensors' own form (model version 2,
 // docs/calibration.md 4.3): each accelerometer's scale factor and bias drift with temperature on
-// that sensor's output, before the matrix that maps sensor axes to tool axes (METHODS.md 3:
+// that sensor's output, before the matrix that maps sensor axes to tool axes (docs/methods.md section 3:
 // output_i = k_i(T) (a_i + b_i(T) + ...)). Private to the library.
 #pragma once
 

@@ -1,4 +1,4 @@
-// METHODS.md 2: 24-position accelerometer calibration with temperature.
+// docs/methods.md section 2: 24-position accelerometer calibration with temperature.
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -186,7 +186,7 @@ void set_axes(Import& import, const std::string& spec) {
   if (std::abs(r.determinant() - 1) > 1e-6)
     throw std::invalid_argument("--axes '" + text +
                                 "': a reflection (determinant -1); sensor and tool frames are right-handed "
-                                "(CONVENTIONS.md), so flip an even number of axes or swap two axes and flip one");
+                                "(docs/conventions.md), so flip an even number of axes or swap two axes and flip one");
   import.axes = r;
   import.axes_text = normalized;
 }

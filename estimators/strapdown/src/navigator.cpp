@@ -44,7 +44,7 @@ std::string format(const char* fmt, double a, double b = 0, double c = 0) {
   return text;
 }
 
-// sin(dip) = G.B / (|G||B|) with G = -f at rest (CONVENTIONS.md).
+// sin(dip) = G.B / (|G||B|) with G = -f at rest (docs/conventions.md).
 double dip_of(const Eigen::Vector3d& f, const Eigen::Vector3d& b) {
   const double den = f.norm() * b.norm();
   return den > 0 ? std::asin(std::clamp(-f.dot(b) / den, -1.0, 1.0)) : 0.0;

@@ -53,8 +53,8 @@ void StationDetector::process_ready(bool all) {
     const Pending& p = pending_.front();
     // Without a tally, a window is decided once the depth after its end is known.
     // Windows wait for it at most depth_history_s of attitude time: a rig whose depth feed stopped
-    // (or never started) must not make the survey hold every window forever (the soak test of
-    // issue 13 saw plumb-survey grow by 1 kB a second); such a window is decided now, without depth.
+    // (or never started) must not make the survey hold every window forever (the long-run soak
+    // test saw plumb-survey grow by 1 kB a second); such a window is decided now, without depth.
     if (!all && !options_.tally && (depth_.empty() || depth_.back().t_s < p.e.t_end) &&
         pending_.back().e.t_end - p.e.t_end <= options_.depth_history_s)
       break;

@@ -37,7 +37,7 @@ void course_jacobians(const StationGeometry& a, const StationGeometry& b, Jacobi
 // Systematic sources: their change of (md, inc, azi) at one station.
 constexpr int kSystematic = 4;  // DEC, DSF, AMIL, ABZ
 
-// ABZ: how the closed-form attitude (CONVENTIONS.md) moves with a bias on the axial accelerometer,
+// ABZ: how the closed-form attitude (docs/conventions.md) moves with a bias on the axial accelerometer,
 // at this station's attitude in the reference field (central difference; the effect does not
 // depend on the toolface, the bias lying on the axis the tool turns about).
 Eigen::Vector3d axial_accelerometer_weight(const StationGeometry& s, const StationSigma& sigma, const ErrorModel& m) {

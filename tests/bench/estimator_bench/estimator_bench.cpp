@@ -1,9 +1,9 @@
 // plumb-bench-estimators: throughput of each estimator plugin in samples per second on one core,
 // fed in 32-sample batches (the sensor topic's batch size) with 10 s windows at 100 Hz, and a
 // baseline measured in the same run: a plain loop that only sums every channel of the same
-// samples (the least any estimator must do). Goal (issue 3): >= 20 million samples/s for
+// samples (the least any estimator must do). Goal: >= 20 million samples/s for
 // compensated. The strapdown navigator runs a 1-hour drilling run at 400 Hz (tactical gyros) and its
-// row gives the real-time factor (goal, issue 18: > 10,000x for the forward filter).
+// row gives the real-time factor (goal: > 10,000x for the forward filter).
 // Accepts Google Benchmark's flags (--help lists them).
 #include <benchmark/benchmark.h>
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 17 item 2: coefficients bind to a tool and to the units of the package they were made for.
+# Coefficients bind to a tool and to the units of the package they were made for.
 # Without DDS: a coefficients file for another tool, for no tool, or for a volts package is
 # refused in one line naming what is wrong. Over DDS (bridge on TRANSPORT, the others on OTHER):
 # coefficients published for another tool are refused in one line, and coefficients without a

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Issue 17 item 2: live calibration checks every station's orientation before recording it, with
+# Live calibration checks every station's orientation before recording it, with
 # the offline rule and message. The simulated operator puts position 1 (+x up) with the z axis
 # pointing down; the procedure refuses it in one line, asks again, and records it once right.
 # Usage: calibration_live_orientation.sh BIN_DIR TRANSPORT DOMAIN

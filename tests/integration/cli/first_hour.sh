@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A new user's first hour (issue 17): the usual mistakes get one line that says what is wrong and
+# A new user's first hour: the usual mistakes get one line that says what is wrong and
 # what to do, usage errors exit 2, nothing waits in silence, interrupted commands report what they
 # did, output is for people. usage: first_hour.sh BIN_DIR DOMAIN
 set -uo pipefail

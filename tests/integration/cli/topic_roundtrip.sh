@@ -19,7 +19,7 @@ timeout 60 "$bin/plumb" topic pub plumb/sensor/calibrated tool_id=T7 samples.0.s
   samples.1.bx=21.25 --wait 15 --transport "$pub_t" > /dev/null 2>&1 || fail "pub batch"
 wait $e1 && grep -q 'azimuth_deg: 271.5' "$work/yaml.txt" && grep -q 'tool_id: "T7"' "$work/yaml.txt" &&
   pass "echo YAML received the attitude" || fail "echo YAML: $(cat "$work/yaml.txt")"
-# A sensor topic's CSV is the sensor CSV of CONVENTIONS.md (issue 17): header, one row per sample.
+# A sensor topic's CSV is the sensor CSV of docs/conventions.md: header, one row per sample.
 wait $e2 && [ "$(grep -c . "$work/batch.csv")" -eq 3 ] && grep -q '^seq,t,fx,fy,fz,bx,by,bz' "$work/batch.csv" &&
   grep -q '^5,0,0,0,-9.5,' "$work/batch.csv" && grep -q '21.25' "$work/batch.csv" &&
   pass "echo CSV printed the sensor CSV, one row per sample" || fail "echo CSV: $(cat "$work/batch.csv" "$work/batch.err")"

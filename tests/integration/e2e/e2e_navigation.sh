@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# End to end for the navigator (issue 8): plumb-sim's 16-minute drilling run (transport S, with the
+# End to end for the navigator: plumb-sim's 16-minute drilling run (transport S, with the
 # rig's measured depth on plumb/depth) -> plumb-estimator --plugin strapdown (transport H) ->
 # `plumb topic echo plumb/navigation/strapdown` (transport E). The last navigation message must hold
 # the truth's end position within 1 % of the drilled length and its attitude within 0.2 deg: a

@@ -19,7 +19,7 @@ trap 'rm -rf "$work"' EXIT
 rows=$(tail -n +2 "$work/att.csv" | grep -c .)
 [ "$rows" -eq 2 ] && pass "whole-file window gives one row per estimator" || fail "expected 2 rows, got $rows"
 head -1 "$work/att.csv" | grep -q '^t,inclination_deg,azimuth_deg,toolface_deg,rpm,valid' &&
-  pass "attitude CSV header per CONVENTIONS.md" || fail "attitude CSV header: $(head -1 "$work/att.csv")"
+  pass "attitude CSV header per docs/conventions.md" || fail "attitude CSV header: $(head -1 "$work/att.csv")"
 python3 - "$work/att.csv" <<'PY' && pass "offline estimates match the truth" || fail "offline estimates off"
 import csv, sys
 rows = {r["estimator"]: r for r in csv.DictReader(open(sys.argv[1]))}

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 17 item 4: two simulated tools (different tool ids, different attitudes) publish on one
+# Two simulated tools (different tool ids, different attitudes) publish on one
 # raw topic; the estimator host keeps one state per tool id and publishes each tool's estimates
 # with its own id, each right, none mixed, and no sample of one counted as lost by the other.
 # Tool A on transport S, tool B on transport H (the host's), estimates read on S.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 18's closed-loop walk: a foot-mounted MEMS IMU at 400 Hz (plumb-sim --scenario walk, stance
+# The closed-loop walk: a foot-mounted MEMS IMU at 400 Hz (plumb-sim --scenario walk, stance
 # periods of 0.05-0.3 s) through `plumb estimate --estimator strapdown` without a magnetometer,
 # initial azimuth given. The loop closes in truth; the navigator's end point must lie within 0.3 %
 # of the distance walked (3-D, from the truth's own path). usage: walk_loop.sh BIN_DIR

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 18: a real recording from an IMU nobody on plumb made (tests/data/walks: x-io's NGIMU on a
+# A real recording from an IMU nobody on plumb made (tests/data/walks: x-io's NGIMU on a
 # foot, two closed loops of about 25 m and 60 m). `plumb estimate` reads the files as published,
 # through --column/--units/--axes, without a magnetometer and with an initial azimuth; the loop
 # closes in truth, so the end point is the error. Checked: every repeated row counted (the count

@@ -27,7 +27,7 @@ grep -q 'Topic: plumb/sensor/raw | Type: plumb::msg::SensorBatch | Count: 200 |'
   grep -q 'Summary:           yes' "$work/info.txt" && grep -q "transport: $rec_t" "$work/info.txt" &&
   pass "info: 200 batches and 200 truths, as sent, with summary and metadata" || fail "info: $(cat "$work/info.txt")"
 
-# Export: the sensor CSV of CONVENTIONS.md, every sample; estimate reads the recording as it is.
+# Export: the sensor CSV of docs/conventions.md, every sample; estimate reads the recording as it is.
 "$bin/plumb" export "$work/run.mcap" -o "$work/sensor.csv" 2> "$work/export.err" &&
   [ "$(grep -vc '^#' "$work/sensor.csv")" -eq 2001 ] && grep -q '^seq,t,fx,fy,fz,bx,by,bz' "$work/sensor.csv" &&
   pass "export: sensor CSV with 2000 samples" || fail "export: $(head -3 "$work/sensor.csv") $(cat "$work/export.err")"

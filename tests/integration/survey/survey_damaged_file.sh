@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 11: plumb-survey restarted on a survey file whose last row was cut (the writer died in the
+# plumb-survey restarted on a survey file whose last row was cut (the writer died in the
 # middle of it) resumes with the valid rows, says which line was damaged, keeps the file as found
 # beside it, and rewrites the survey whole; a file that is not a survey is refused and left alone.
 # usage: survey_damaged_file.sh BIN_DIR DOMAIN

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 11 live: plumb-sim's stop-and-go drilling run (transport S: six 1.5 m rotary segments, each
+# Surveys live: plumb-sim's stop-and-go drilling run (transport S: six 1.5 m rotary segments, each
 # followed by a 30 s stop, after a 60 s alignment) -> plumb-estimator --plugin static (S) ->
 # plumb-survey (transport V) with the survey file. After its third station plumb-survey is killed
 # with SIGKILL and restarted at once; it must resume from its file. When the survey holds all seven

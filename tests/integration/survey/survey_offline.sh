@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 11 offline: `plumb survey` on the simulator's stop-and-go drilling run (sensor CSV with
+# Surveys offline: `plumb survey` on the simulator's stop-and-go drilling run (sensor CSV with
 # measured depth, through the static estimator) and on a station list; the survey CSV and SVG
 # written whole; bad inputs refused with one line: depth backwards, a duplicate station, an angle
 # out of range, a missing reference, a true survey without declination.

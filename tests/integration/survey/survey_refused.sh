@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 11, bad input live: plumb-survey fed by hand (`plumb topic pub`) with a stop at 10 m, then a
+# Surveys, bad input live: plumb-survey fed by hand (`plumb topic pub`) with a stop at 10 m, then a
 # stop at 5 m (the depth went backwards) and a stop whose field is far from the reference. The
 # backwards station is refused with one stderr line and counted (status degraded), the field one is
 # kept and flagged; neither is dropped in silence, and the survey file holds exactly the two kept.

@@ -12,7 +12,7 @@ namespace plumb {
 namespace {
 
 // Version 2's sensor terms: the sensor's own scale multiplies its whole output, bias included
-// (METHODS.md 3: output_i = k_i(T) (a_i + b_i(T) + ...)), before the matrix S.
+// (docs/methods.md section 3: output_i = k_i(T) (a_i + b_i(T) + ...)), before the matrix S.
 TEST(CalibrationModel, VersionTwoScaleDriftActsOnTheSensorsOutput) {
   TriadModel t;
   t.sensitivity << 2, 0.1, 0, 0, 2, 0, 0.05, 0, 2;

@@ -1,4 +1,4 @@
-// METHODS.md 3 on simulated packages with known coefficients.
+// docs/methods.md section 3 on simulated packages with known coefficients.
 #include <gtest/gtest.h>
 
 #include "plumb/calibration/triad_fit.hpp"

@@ -1,5 +1,5 @@
 // A sensor package written for the tests in the source documents' own form, independent of
-// plumb's calibration model and simulator (METHODS.md 3, each accelerometer i):
+// plumb's calibration model and simulator (docs/methods.md section 3, each accelerometer i):
 //   output_i = k_i(T) (a_i + b_i(T) + q_i a_i^2 + sum_j m_ij a_j)
 // with k_i(T) = k_i (1 + sum_p alpha_ip dT^p) and b_i(T) = b_i + sum_p beta_ip dT^p, dT = T - 25.
 // Outputs in volts or counted pulses per sample interval; a thermometer with its own

@@ -1,4 +1,4 @@
-// METHODS.md 2: 24 positions at several temperatures, thermometer non-linear above 175 degC.
+// docs/methods.md section 2: 24 positions at several temperatures, thermometer non-linear above 175 degC.
 #include <gtest/gtest.h>
 
 #include "sim_support.hpp"

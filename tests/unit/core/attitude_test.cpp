@@ -1,4 +1,4 @@
-// Closed-form attitude against the frame definitions of CONVENTIONS.md.
+// Closed-form attitude against the frame definitions of docs/conventions.md.
 #include <cmath>
 
 #include <Eigen/Dense>
@@ -18,7 +18,7 @@ TEST(Frames, RotationsAreProperAndComposeTheDefinition) {
   }
   const double i = 0.4, az = 2.1, tf = -0.7;
   EXPECT_NEAR((c_nb(i, az, tf) - rot3(tf) * rot2(i) * rot3(az)).norm(), 0, 1e-15);
-  // G = C_n^b (0, 0, g) equals the component form of CONVENTIONS.md.
+  // G = C_n^b (0, 0, g) equals the component form of docs/conventions.md.
   EXPECT_NEAR((c_nb(i, az, tf) * Eigen::Vector3d(0, 0, 9.8) - gravity_tool(i, tf, 9.8)).norm(), 0, 1e-12);
 }
 

@@ -1,4 +1,4 @@
-// The sensor, attitude and truth CSV formats of CONVENTIONS.md.
+// The sensor, attitude and truth CSV formats of docs/conventions.md.
 #include <cmath>
 #include <sstream>
 

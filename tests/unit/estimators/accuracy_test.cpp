@@ -1,4 +1,4 @@
-// The accuracy claims of issue 3 item 5 on the reference grid of CONVENTIONS.md, through the
+// The accuracy the README claims on the reference grid of docs/conventions.md, through the
 // comparison library (so the numbers `plumb compare` prints are the ones tested). Monte Carlo: 4
 // seeds x 36 azimuths = 144 records per case; an efficient estimator's RMS error then has a
 // relative standard deviation of 1/sqrt(2 x 144) = 5.9 %, so 1.25 x the bound is a 4-sigma limit.

@@ -1,4 +1,4 @@
-// Issue 17 item 3 and issue 14 item 3: a plugin whose assumptions the data violate says so
+// A plugin whose assumptions the data violate says so
 // (invalid, the reason, standard deviation 0 = unknown) instead of printing a precise-looking number;
 // near vertical the azimuth's sigma grows like 1/sinI and its validity clears at the stated limit.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Issue 3 "Bad input": bad samples are rejected and counted, bad windows are reported invalid
+// Bad input: bad samples are rejected and counted, bad windows are reported invalid
 // with a reason, and no output is ever non-finite.
 #include <gtest/gtest.h>
 

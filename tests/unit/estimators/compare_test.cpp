@@ -64,7 +64,7 @@ TEST(CompareLibrary, WritesTableCsvAndSvg) {
   EXPECT_NE(empty.str().find("no case"), std::string::npos);
 }
 
-// The coverage column (issue 14): RMS of error / reported sd, 1 for honest sds. Far from vertical,
+// The coverage column: RMS of error / reported sd, 1 for honest sds. Far from vertical,
 // where the old small-angle sd of `compensated` was 7-20x too small, 2 x 36 records per case.
 TEST(CompareLibrary, CoverageColumnNearOneForHonestSigmasFarFromVertical) {
   CompareConfig c;
@@ -129,7 +129,7 @@ TEST(CompareLibrary, SingleScenarioKeepsItsNoise) {
 namespace plumb::compare {
 namespace {
 
-// The navigator on the 16-minute reference run (issue 8): attitude and end position inside the
+// The navigator on the 16-minute reference run: attitude and end position inside the
 // issue's bounds, and far inside the source's 2 deg.
 TEST(DrillingCompare, TacticalNavigatorMeetsTheIssueBounds) {
   DrillingCompareConfig c;
@@ -144,7 +144,7 @@ TEST(DrillingCompare, TacticalNavigatorMeetsTheIssueBounds) {
   EXPECT_LT(r.end_position_percent(), 1.0);
   EXPECT_GT(r.attitude_coverage, 0.5);
   EXPECT_LT(r.attitude_coverage, 1.5);
-  // Per angle too (issue 14): the navigator filter's sds beside the windowed plugins'.
+  // Per angle too: the navigator filter's sds beside the windowed plugins'.
   for (double cov : {r.inclination_coverage, r.azimuth_coverage, r.toolface_coverage}) {
     EXPECT_GT(cov, 0.3);
     EXPECT_LT(cov, 2.0);

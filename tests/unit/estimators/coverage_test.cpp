@@ -1,4 +1,4 @@
-// Issue 14: are the standard deviations the plugins report honest? Truth from the simulator, a
+// Are the standard deviations the plugins report honest? Truth from the simulator, a
 // Monte Carlo grid from vertical to upside down, every speed the plugins claim (still, 60 rpm,
 // 300 rpm, stick-slip at 60 and 300 rpm) and two noise levels. For honest sigmas error/sigma has
 // unit variance, so in every group (one inclination, one speed, one noise level, pooled over the
@@ -22,12 +22,12 @@
 namespace plumb::test {
 namespace {
 
-// The scenario of issue 14: g 9.80665, 50.5 uT, dip 61 deg, 12 s at 100 Hz.
+// The coverage scenario: g 9.80665, 50.5 uT, dip 61 deg, 12 s at 100 Hz.
 struct Noise {
   const char* name;
   double sigma_accel, sigma_mag;
 };
-// "high": SNR_a 15 dB at 3 deg and SNR_m 20 dB (issue 14's figures); "low": 10x less noise.
+// "high": SNR_a 15 dB at 3 deg and SNR_m 20 dB; "low": 10x less noise.
 constexpr Noise kNoises[] = {{"high", 0.0645, 1.73}, {"low", 0.00645, 0.173}};
 
 struct Speed {
@@ -202,11 +202,11 @@ TEST(Coverage, IntegralSigmasHonestWhereItsAzimuthIsValid) {
   EXPECT_EQ(cov.azimuth.count("I 89"), 0u);
 }
 
-// Issue 14's worst case: I = 30 deg, A = 341 deg, where the azimuth barely depends on the phase
+// The worst case found: I = 30 deg, A = 341 deg, where the azimuth barely depends on the phase
 // alpha = T - M, so a phase-only sigma (the old one: 0.004 deg) misses the amplitude noise (error
 // 0.198 deg). The reported sigma must match both the errors and the Cramer-Rao bound there: an
 // efficient estimator's sigma is the bound.
-TEST(Coverage, CompensatedSigmaOnTheBoundAtIssue14sWorstAttitude) {
+TEST(Coverage, CompensatedSigmaOnTheBoundAtTheWorstAttitude) {
   Tally azimuth;
   double sd2 = 0;
   windowed::CrbCase crb;

@@ -144,7 +144,7 @@ TEST(DrillingPhysics, SensorsAtRestSeeGravityEarthRateAndTheField) {
 }
 
 TEST(DrillingPhysics, ClosedFormAttitudeOfTheStillSensorsIsTheTruth) {
-  // CONVENTIONS.md's closed form on -f and B recovers the truth's I, A, T at every still sample.
+  // docs/conventions.md's closed form on -f and B recovers the truth's I, A, T at every still sample.
   DrillingScenario sc = DrillingScenario::reference(ImuGrade::perfect(), 10);
   sc.magnetometer.sigma_uT = 0;
   DrillingSimulator sim(sc);

@@ -1,4 +1,4 @@
-// Noiseless samples carry the exact geometry of CONVENTIONS.md: the closed-form attitude gives
+// Noiseless samples carry the exact geometry of docs/conventions.md: the closed-form attitude gives
 // back the true angles, gravity and field keep their magnitudes and dip, and the gyros see the
 // platform rate with the sign that makes dC/dt = -[w x] C.
 #include <cmath>

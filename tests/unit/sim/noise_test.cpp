@@ -1,4 +1,4 @@
-// White noise: its standard deviation follows the SNR definition of CONVENTIONS.md (computed
+// White noise: its standard deviation follows the SNR definition of docs/conventions.md (computed
 // here independently from the field geometry), it is zero-mean and reproducible for a seed.
 #include <cmath>
 #include <vector>

@@ -87,7 +87,7 @@ TEST(WalkPhysics, StanceIsExactlyStill) {
   EXPECT_GT(still, static_cast<std::size_t>(15 * 400));
 }
 
-// Issue 18's stance periods: 0.05 to 0.3 s, drawn per stride from the seed, the same at any rate;
+// A walk's stance periods: 0.05 to 0.3 s, drawn per stride from the seed, the same at any rate;
 // at 400 Hz even the shortest stance holds 20 samples.
 TEST(WalkPhysics, StancesLastFromFiftyToThreeHundredMilliseconds) {
   const WalkPath path(WalkScenario::loop_60m());

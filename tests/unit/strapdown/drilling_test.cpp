@@ -1,5 +1,5 @@
-// The navigator on the simulator's 16-minute reference drilling run (issue 8's accuracy case;
-// issue 18's magnetometer cases), one seed per case; monte_carlo_test.cpp sweeps seeds.
+// The navigator on the simulator's 16-minute reference drilling run (the accuracy case
+// and the magnetometer cases), one seed per case; monte_carlo_test.cpp sweeps seeds.
 #include <gtest/gtest.h>
 
 #include "drilling_support.hpp"
@@ -25,7 +25,7 @@ TEST(StrapdownDrilling, ReferenceRunAccuracy) {
     EXPECT_LE(with.end_position_pct(), 1.0) << label;
     EXPECT_GT(with.valid_rows, 900u) << label;
     EXPECT_EQ(counters.at("still_periods"), 5u) << label;  // alignment + four connections
-    // Without the rig's depth: reported, not required (issue 8).
+    // Without the rig's depth: reported, not required.
     const RunMetrics without = run_drilling(scenario, parameters_for(scenario), false);
     print((label + " no depth").c_str(), without);
     EXPECT_LE(without.max_attitude_err_deg(), 2.0 * c.max_attitude_deg) << label;
@@ -51,7 +51,7 @@ TEST(StrapdownDrilling, SmootherEmitsEverythingAtFlush) {
   EXPECT_TRUE(rows.empty());
 }
 
-// Issue 18 item 2: stops with |B| +1 uT and dip +0.5 deg skip their azimuth update (counted),
+// Stops with |B| +1 uT and dip +0.5 deg skip their azimuth update (counted),
 // and the azimuth stays within its sigma.
 TEST(StrapdownDrilling, DisturbedStopsAreFlaggedAndIgnored) {
   auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 100, 3);
@@ -65,7 +65,7 @@ TEST(StrapdownDrilling, DisturbedStopsAreFlaggedAndIgnored) {
   EXPECT_LE(m.max_azi_err_deg, 0.2);
 }
 
-// Issue 18 item 1: no magnetometer, initial azimuth given: tilt corrected at every stop, azimuth
+// No magnetometer, initial azimuth given: tilt corrected at every stop, azimuth
 // carried by the gyros with a growing sigma, reference "relative".
 TEST(StrapdownDrilling, NoMagnetometerWithInitialAzimuth) {
   auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 100, 4);
@@ -82,7 +82,7 @@ TEST(StrapdownDrilling, NoMagnetometerWithInitialAzimuth) {
   EXPECT_EQ(counters.at("still_periods"), 5u);
 }
 
-// Issue 18 item 5: the backward smoother in the no-magnetometer mode: every row at flush, the
+// The backward smoother in the no-magnetometer mode: every row at flush, the
 // azimuth still inside its (smoothed) sigma, no worse than the forward filter anywhere.
 TEST(StrapdownDrilling, SmootherWithoutMagnetometer) {
   auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 100, 5);

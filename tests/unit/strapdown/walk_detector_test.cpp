@@ -46,7 +46,7 @@ TEST(WalkDetector, AutoTakesTheGlrtWhenSamplesCarryNoField) {
   EXPECT_NE(glrt.counters.at("zero_velocity_updates"), magnitude.counters.at("zero_velocity_updates"));
 }
 
-// Issue 18 item 1: a foot or a hand-carried sensor does not move along its own axis; with the
+// A foot or a hand-carried sensor does not move along its own axis; with the
 // drilling tool's lateral-velocity update off, none is applied and the walk still closes.
 TEST(WalkDetector, LateralVelocityUpdateCanBeTurnedOff) {
   auto scenario = sim::WalkScenario::loop_25m();

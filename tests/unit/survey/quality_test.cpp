@@ -90,7 +90,7 @@ TEST(AzimuthReference, TrueAndGrid) {
 }  // namespace plumb::survey
 
 // Multi-station analysis against the closed-form attitude: stations measured with a known axial
-// magnetometer bias (G and B from the frames of CONVENTIONS.md, b added to Bz, then |B|, dip and
+// magnetometer bias (G and B from the frames of docs/conventions.md, b added to Bz, then |B|, dip and
 // azimuth as any estimator computes them) give that bias back, and the unbiased azimuths.
 namespace plumb::survey {
 namespace {

@@ -1,4 +1,4 @@
-// Issue 11's accuracy on simulated runs with known truth: the simulator's stop-and-go drilling run
+// Survey accuracy on simulated runs with known truth: the simulator's stop-and-go drilling run
 // (six 1.5 m rotary segments, 30 s stops) through the static estimator (5 s windows) and the station
 // detector into a survey, over many seeds. Station inclination and azimuth errors against the
 // truth must match the estimator's own sigma (RMS of error/sigma in [0.7, 1.5]), and the end of the

@@ -51,7 +51,7 @@ TEST(Uncertainty, DepthScaleStretchesThePath) {
 }
 
 // ABZ: a bias b on the axial accelerometer, put through the closed-form attitude at every station
-// (G and B from the frames of CONVENTIONS.md, b added to Gz), moves the end of the path by a vector
+// (G and B from the frames of docs/conventions.md, b added to Gz), moves the end of the path by a vector
 // v b; the propagation must report sigma^2 v v^T for that term. Also the textbook inclination
 // sensitivity: I = atan2(g sinI, g cosI + b) gives dI/db = -sinI/g.
 TEST(Uncertainty, AxialAccelerometerBiasMatchesTheClosedForm) {

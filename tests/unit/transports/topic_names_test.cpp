@@ -41,7 +41,7 @@ TEST(TopicNames, NavigatorTopicsAreDeclaredInTheIdl) {
   }
 }
 
-// Issue 11: the survey of a tool is kept whole for late joiners.
+// The survey of a tool is kept whole for late joiners.
 TEST(TopicNames, SurveyTopicKeepsEveryStationForLateJoiners) {
   EXPECT_EQ(names::survey("drill"), "plumb/survey/drill");
   EXPECT_TRUE(carries(names::survey("drill"), type<topics::SurveyStation>()));

@@ -129,7 +129,7 @@ dds::DataWriterQos writer_qos(const Qos& in) {
   // wake-up of the event thread per message, which doubled the latency on a busy 2-core machine.
   // 5 ms: a NACK for a sample sent less than 5 ms ago is answered by the next heartbeat instead.
   qos.reliable_writer_qos().times.nackSupressionDuration = eprosima::fastrtps::Duration_t(0, 5000000u);
-  // No shared-memory data sharing: UDP only (ARCHITECTURE.md).
+  // No shared-memory data sharing: UDP only (docs/architecture.md).
   qos.data_sharing().off();
   return qos;
 }

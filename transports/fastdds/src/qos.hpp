@@ -1,5 +1,5 @@
 // Translation of plumb's QoS profiles and participant options into Fast DDS QoS, following the
-// interoperability rules of ARCHITECTURE.md (XCDR1, UDPv4 only, loopback-only by default).
+// interoperability rules of docs/architecture.md (XCDR1, UDPv4 only, loopback-only by default).
 #pragma once
 
 #include <fastdds/dds/domain/qos/DomainParticipantQos.hpp>

@@ -1,4 +1,4 @@
-// A drilling run for the strapdown navigator (shared METHODS.md section 4, CONVENTIONS.md
+// A drilling run for the strapdown navigator (docs/methods.md section 4, docs/conventions.md
 // "Navigation"): the tool advances along its own z axis while building and turning, sliding
 // (toolface fixed) or rotary (toolface turning), and stands perfectly still for pipe connections.
 // Gyros, accelerometers, magnetometers and the rig's measured depth are exact functions of one
@@ -24,61 +24,10 @@
 #include <Eigen/Core>
 
 #include "plumb/core/sample.hpp"
+#include "plumb/sim/imu_model.hpp"
 #include "plumb/sim/platform.hpp"
 
 namespace plumb::sim {
-
-// IMU error levels. Biases are constant over a run, drawn per axis as N(0, bias^2) from the seed
-// unless given explicitly (DrillingScenario::gyro_bias / accel_bias); white noise per sample has
-// sigma = density / sqrt(dt) (ARW for gyros, VRW for accelerometers). Named grades:
-//   grade       gyro bias  gyro ARW     accel bias  accel VRW       gyro range
-//               deg/h      deg/sqrt(h)  mg          m/s/sqrt(h)     deg/s
-//   navigation  0.01       0.002        0.025       0.005           500
-//   tactical    1          0.05         0.3         0.03            1000
-//   mems        10         0.3          2           0.06            2000
-//   perfect     0          0            0           0               unlimited
-struct ImuGrade {
-  std::string name = "perfect";
-  double gyro_bias_deg_h = 0;      // 1-sigma per axis
-  double gyro_arw_deg_rt_h = 0;    // angle random walk
-  double accel_bias_mg = 0;        // 1-sigma per axis; 1 mg = 9.80665e-3 m/s^2
-  double accel_vrw_mps_rt_h = 0;   // velocity random walk
-  double gyro_range_deg_s = 0;     // samples beyond +-range are clipped and flagged; 0: unlimited
-
-  static ImuGrade navigation();
-  static ImuGrade tactical();
-  static ImuGrade mems();
-  static ImuGrade perfect();
-  // "navigation", "tactical", "mems" or "perfect"; throws std::invalid_argument otherwise.
-  static ImuGrade named(const std::string& name);
-
-  // The same in SI units for a sample period dt (s).
-  double gyro_bias_sigma() const;               // rad/s
-  double accel_bias_sigma() const;              // m/s^2
-  double gyro_noise_sigma(double dt) const;     // rad/s per sample
-  double accel_noise_sigma(double dt) const;    // m/s^2 per sample
-  double gyro_range() const;                    // rad/s; infinity when unlimited
-};
-
-// One run's IMU, shared by the drilling and walking simulators: the grade's biases drawn from the
-// seed (or given), white noise per sample, gyro clipping, and the earth rate at the latitude.
-class ImuModel {
- public:
-  ImuModel(const ImuGrade& grade, double rate_hz, std::uint64_t seed, const std::optional<Eigen::Vector3d>& gyro_bias,
-           const std::optional<Eigen::Vector3d>& accel_bias, double earth_rate, double latitude_deg);
-  // Gyros and accelerometers (flags kHasGyro, kGyroSaturated) from the true motion: w_nb and C_n^b,
-  // dv/dt and v in NED, g, a specific force added on top (vibration), and unit normal draws n_w and
-  // n_a from the caller's noise stream.
-  void measure(const Eigen::Vector3d& w_nb, const Eigen::Matrix3d& c_nb, const Eigen::Vector3d& acceleration,
-               const Eigen::Vector3d& velocity, double g, const Eigen::Vector3d& extra_f, const Eigen::Vector3d& n_w,
-               const Eigen::Vector3d& n_a, Sample& out) const;
-  const Eigen::Vector3d& gyro_bias() const { return gyro_bias_; }
-  const Eigen::Vector3d& accel_bias() const { return accel_bias_; }
-
- private:
-  Eigen::Vector3d gyro_bias_, accel_bias_, earth_rate_ned_;
-  double sigma_gyro_ = 0, sigma_accel_ = 0, gyro_range_ = 0;
-};
 
 enum class SegmentKind { Drill, Stop };
 enum class SteeringMode { Sliding, Rotary };
@@ -111,7 +60,7 @@ struct DrillingPlan {
   std::vector<DrillSegment> segments;
 };
 
-// A magnetic disturbance during one stop (issue 18): |B| and dip shifted while the tool stands.
+// A magnetic disturbance during one stop: |B| and dip shifted while the tool stands.
 struct MagneticDisturbance {
   std::size_t stop_index = 0;    // 0 = first Stop segment of the plan (the alignment is not a stop)
   double delta_total_uT = 0;
@@ -147,7 +96,7 @@ struct DrillingScenario {
   Vibration vibration;           // lateral, added to f while drilling only, scaled by the speed ramp
   std::uint64_t seed = 1;
 
-  // Issue 8's accuracy case: 16 min = 60 s alignment, then four drilling segments of 165 s
+  // The navigator's accuracy case: 16 min = 60 s alignment, then four drilling segments of 165 s
   // (8 m each at 0.05 m/s: sliding with build, rotary at 30 rpm, sliding with build and turn,
   // rotary with turn) each followed by a 60 s pipe connection; I 85 -> ~89 deg, A 30 -> ~28 deg;
   // latitude 35 deg, B 50 uT, dip 60 deg, g 9.80665; magnetometer noise 0.1 uT; no vibration.
@@ -249,6 +198,5 @@ Eigen::Vector3d rate_nb(double inc, double tf, double inc_rate, double azi_rate,
 
 // One readable line: plan, attitude, grade, environment, rate, seed.
 std::string describe(const DrillingScenario& scenario);
-std::string describe(const ImuGrade& grade);
 
 }  // namespace plumb::sim

@@ -1,5 +1,5 @@
-// The rotating single-axis stabilized platform and its sensors (shared METHODS.md section 1,
-// CONVENTIONS.md). The tool holds a fixed inclination and azimuth; the sensor platform turns
+// The rotating single-axis stabilized platform and its sensors (docs/methods.md section 1,
+// docs/conventions.md). The tool holds a fixed inclination and azimuth; the sensor platform turns
 // about the tool z axis with a rotation profile, so the gravity toolface T(t) is the platform angle.
 #pragma once
 
@@ -37,7 +37,7 @@ struct TriadErrors {
 };
 
 struct Noise {
-  // Either sigma given directly or an SNR in dB (CONVENTIONS.md "Noise and signal-to-noise ratio").
+  // Either sigma given directly or an SNR in dB (docs/conventions.md "Noise and signal-to-noise ratio").
   std::optional<double> sigma_accel;   // m/s^2
   std::optional<double> sigma_mag;     // microtesla
   std::optional<double> snr_accel_db;

@@ -1,4 +1,4 @@
-// A calibration turntable in a temperature chamber (shared METHODS.md sections 2 and 3): a sensor
+// A calibration turntable in a temperature chamber (docs/methods.md sections 2 and 3): a sensor
 // package with known true coefficients placed at a list of stations, producing raw outputs
 // (volts, or pulse counts per unit time for quartz accelerometers; magnetometer counts; a raw,
 // non-linear thermometer), with an exponential settling transient after every move and white noise.
@@ -41,7 +41,7 @@ struct SensorPackage {
   static SensorPackage typical(AccelOutput output, std::uint64_t seed, bool temperature_effects = true);
 };
 
-// One station: where the tool is (an attitude per CONVENTIONS.md), at what temperature, for how long.
+// One station: where the tool is (an attitude per docs/conventions.md), at what temperature, for how long.
 struct StationPlan {
   std::string name;
   std::string orientation = "any";  // the label the station list will carry (+x, -y@90, any)

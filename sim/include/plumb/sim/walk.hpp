@@ -1,8 +1,8 @@
 // A walk with the IMU strapped to one foot, around a closed loop: the classic check of a
-// zero-velocity-update navigator (issue 18, "Accuracy"), also how users check a gyro tool on the
+// zero-velocity-update navigator's accuracy, also how users check a gyro tool on the
 // surface. The foot swings from footprint to footprint and stands perfectly still on each one.
 //
-// Mounting (CONVENTIONS.md frames): the tool z axis points forward along the foot, the tool x axis
+// Mounting (docs/conventions.md frames): the tool z axis points forward along the foot, the tool x axis
 // up out of the instep, the tool y axis to the right of the foot. With the foot's heading psi,
 // pitch theta (toes up positive) and roll phi (right side down positive) this gives exactly
 //   C_n^b = R3(phi) R2(90 deg + theta) R3(psi):  I = 90 deg + theta, A = psi, T = phi,
@@ -30,7 +30,7 @@
 #include <Eigen/Core>
 
 #include "plumb/core/sample.hpp"
-#include "plumb/sim/drilling.hpp"
+#include "plumb/sim/imu_model.hpp"
 
 namespace plumb::sim {
 
@@ -75,7 +75,7 @@ struct WalkScenario {
   // 0.3 m x 0.17 m), so the foot returns to its start height.
   static WalkScenario loop(double length_m, double climb_m, const ImuGrade& grade = ImuGrade::mems(),
                            double rate_hz = 400, std::uint64_t seed = 1);
-  // Issue 18's cases: a flat 25 m loop (18 strides), and a 60 m loop with 3 m of stairs up and down.
+  // The navigator's test walks: a flat 25 m loop (18 strides), and a 60 m loop with 3 m of stairs up and down.
   static WalkScenario loop_25m(const ImuGrade& grade = ImuGrade::mems(), double rate_hz = 400, std::uint64_t seed = 1);
   static WalkScenario loop_60m(const ImuGrade& grade = ImuGrade::mems(), double rate_hz = 400, std::uint64_t seed = 1);
 

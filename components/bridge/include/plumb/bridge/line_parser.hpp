@@ -1,5 +1,5 @@
 // Incremental parser of the ASCII line mode of docs/protocol.md: sensor CSV lines (shared
-// CONVENTIONS.md) arriving in byte chunks of any size. A header line may come at any time (the
+// docs/conventions.md) arriving in byte chunks of any size. A header line may come at any time (the
 // board restarted) and replaces the previous one. Bad lines are counted (csv_errors) with an
 // error naming the line and column, and parsing goes on with the next line.
 #pragma once

@@ -1,5 +1,5 @@
 // The sensor board's wire protocol (docs/protocol.md): a binary frame per sample and an ASCII line
-// mode that speaks the sensor CSV of shared CONVENTIONS.md. Encoding only; the incremental parsers
+// mode that speaks the sensor CSV of docs/conventions.md. Encoding only; the incremental parsers
 // live in frame_parser.hpp and line_parser.hpp. No DDS here: the simulator links this too.
 #pragma once
 

@@ -1,4 +1,4 @@
-// A sensor CSV (shared CONVENTIONS.md) replayed at its own pace ("realtime"), N times faster
+// A sensor CSV (docs/conventions.md) replayed at its own pace ("realtime"), N times faster
 // ("xN") or as fast as possible ("max"). Bad rows are counted (csv_errors) with an error naming
 // line and column and the replay goes on, unless strict. Another logger's file is read through a
 // csv::Import (its columns, units and axes), and the start of the file is checked for units that

@@ -1,5 +1,5 @@
-// Plugins side by side on a recording, where there is no truth (issue 12: "plumb compare takes
-// recordings"): what each plugin says (its spread over the run and the sigma it reports), and how
+// Plugins side by side on a recording, where there is no truth (`plumb compare` on
+// recordings): what each plugin says (its spread over the run and the sigma it reports), and how
 // far each stands from a reference plugin against their combined sigma. Two honest estimators of
 // one tool differ by less than 2 sqrt(s1^2 + s2^2) about 95 % of the time; far fewer means that
 // one of them errs or understates its sigma.

@@ -1,5 +1,5 @@
-// Side-by-side comparison of estimator plugins on simulated data (issue 3, `plumb compare`).
-// A grid of cases (inclination x speed x accelerometer SNR; the reference grid of CONVENTIONS.md by
+// Side-by-side comparison of estimator plugins on simulated data (`plumb compare`).
+// A grid of cases (inclination x speed x accelerometer SNR; the reference grid of docs/conventions.md by
 // default) is swept over azimuth with several Monte Carlo seeds per azimuth; each record is one
 // estimator window. Per case and plugin: RMS and maximum azimuth and inclination errors beside the
 // Cramer-Rao bound, and the error per azimuth (for the paper-style plot).
@@ -67,7 +67,7 @@ struct PluginCaseResult {
   double rms_inclination_error_deg = 0;
   double max_inclination_error_deg = 0;
   double mean_azimuth_sd_deg = 0;         // the plugin's own reported standard deviation, RMS
-  // Coverage (issue 14): RMS of error / reported sd over the valid records with a reported sd;
+  // Coverage, whether the reported standard deviations are honest: RMS of error / reported sd over the valid records with a reported sd;
   // 1 when the sd is honest, above 1 when it is too small. 0 when the plugin reports no sd.
   double azimuth_coverage = 0, inclination_coverage = 0;
   // Azimuth-dependent bias: least-squares fit of the mean azimuth error to a + b sinA + c cosA.

@@ -1,6 +1,6 @@
 // `plumb compare --scenario drilling`: drilling runs from the simulator (sim/drilling.hpp) through
 // a navigator plugin (strapdown), errors against the exact truth over the whole run, beside the
-// figures the source reports for its gyro inclinometer (METHODS.md section 4).
+// figures the source reports for its gyro inclinometer (docs/methods.md section 4).
 #pragma once
 
 #include <cstdint>
@@ -46,7 +46,7 @@ struct DrillingRunResult {
   double end_position_m = 0;            // 3-D, at the last estimate
   double max_horizontal_velocity_mps = 0, max_down_velocity_mps = 0;
   double attitude_coverage = 0;         // RMS(error / reported sd) over I, A, T
-  // The same per angle (issue 14: the navigator filter's sigmas beside the windowed plugins').
+  // The same per angle (the navigator filter's sigmas beside the windowed plugins').
   double inclination_coverage = 0, azimuth_coverage = 0, toolface_coverage = 0;
   double position_coverage = 0;         // RMS(error / reported sd) over N, E, D
   int estimates = 0, valid = 0;

@@ -41,18 +41,35 @@ using Parameters = std::map<std::string, std::string>;
 // Samples an estimator refused, by reason (non-finite, saturated, time backwards, ...).
 using Counters = std::map<std::string, std::uint64_t>;
 
+// Contract of every call below (the plugins of estimators/ keep it; a new plugin must too):
+//   blocks     none: no call waits for I/O, a lock or another thread; each runs to completion on
+//              the caller's thread (push and flush cost what the samples' computation costs).
+//   allocates  stated per call.
+//   threads    one thread at a time per instance: an estimator is not thread-safe, and takes no
+//              lock. Separate instances share no state and may run on separate threads at once.
+//              The hosts (estimators/api Runner, components/plumb-estimator) call every instance
+//              from one thread, the one that takes the samples from the transport.
 class Estimator {
  public:
+  // Destroyed through EstimatorPtr, by the plugin that made it (its own operator delete).
   virtual ~Estimator() = default;
+  //   allocates: yes (the strings and the parameter list).
   virtual Info info() const = 0;
   // Applies parameters (names from info().parameters; missing ones take their defaults) and
   // resets all state. Throws ParameterError for an unknown name or a bad value.
+  //   allocates: yes (the state is rebuilt). Call it before the first push.
   virtual void configure(const Parameters& params) = 0;
   // Feeds samples, oldest first; appends the estimates they complete to `out`. Never throws for
   // bad data: bad samples are rejected and counted, bad windows produce invalid estimates.
+  //   allocates: yes, may on any call: for each estimate made (its strings, and `out` when it must
+  //     grow; a caller that keeps one vector keeps its capacity); the windowed plugins when a
+  //     window closes (the platform-angle fit's work arrays) or outgrows the longest so far; the
+  //     strapdown navigator as its queues and smoother records grow.
   virtual void push(std::span<const Sample> samples, std::vector<Estimate>& out) = 0;
   // End of the stream: appends an estimate for the samples not yet covered, if there are any.
+  //   allocates: as push. The estimator then waits for configure (a new stream).
   virtual void flush(std::vector<Estimate>& out) = 0;
+  //   allocates: yes (the map).
   virtual Counters counters() const = 0;
   // What the estimator has to say once, as it arises (a stream it cannot estimate and why, the
   // noise it read off the data): hosts log it and put the latest on plumb/status. Returns and

@@ -15,6 +15,12 @@
 
 namespace plumb::estimator {
 
+// Contract: a Runner is the estimators' contract gathered in one object. No call blocks (each runs
+// its estimators to completion on the caller's thread; the sink runs there too, inside push and
+// flush). A Runner is not thread-safe: one thread at a time per Runner, and every call on it from
+// that thread, the sink included (the sink must not call back into the same Runner). Separate
+// Runners share nothing and may run on separate threads (the estimator host keeps one per tool, all
+// on its main thread). Allocation is stated per call.
 class Runner {
  public:
   struct Slot {
@@ -28,21 +34,33 @@ class Runner {
   using Sink = std::function<void(const Slot& slot, Estimate& estimate)>;
 
   Runner() = default;
+  // Adds an estimator (loaded, not yet configured); configure before the first push.
+  //   allocates: yes (a slot).
   void add(std::string name, EstimatorPtr estimator);
 
   // Gives each estimator its own parameters (one Parameters per estimator, in order; see
   // assign_parameters) and resets it. Throws ParameterError before anything runs.
+  //   allocates: yes (each estimator's configure).
   void configure(const std::vector<Parameters>& parameters);
   // --param KEY=VALUE assignments and an optional window, distributed by assign_parameters.
+  //   allocates: yes.
   void configure(const std::vector<std::string>& assignments, std::optional<double> window_s);
-  // Back to the state right after configure (a new record, a new tool).
+  // Back to the state right after configure (a new record, a new tool): each estimator is
+  // configured again with its parameters. allocates: yes.
   void reset();
 
+  // Each estimator in turn takes the samples; its estimates go to the sink, named after its slot,
+  // before the next estimator runs.
+  //   allocates: as Estimator::push; the Runner keeps one vector of estimates for all its
+  //     estimators, so its capacity is reused from call to call.
   void push(std::span<const Sample> samples, const Sink& sink);
   // End of the stream: every estimator reports what its open window holds.
+  //   allocates: as Estimator::flush.
   void flush(const Sink& sink);
 
+  //   allocates: no (a reference, valid until the next add).
   const std::vector<Slot>& slots() const { return slots_; }
+  //   allocates: yes (infos(), counters() and needing_gyro() build their answer).
   std::vector<Info> infos() const;
   // "estimates", "invalid" and the estimator's own counters, each as "<plugin>.<name>".
   std::vector<std::pair<std::string, std::uint64_t>> counters() const;

@@ -35,7 +35,7 @@ struct CommonOptions {
   double max_error_deg = 0.005;
 };
 
-// METHODS.md 3: six stations, each axis at +g and -g with the others horizontal.
+// docs/methods.md section 3: six stations, each axis at +g and -g with the others horizontal.
 Outcome six_position(const std::vector<Sample>& samples, const std::vector<Station>& stations,
                      const CommonOptions& options = {});
 Outcome six_position(const std::vector<StationAverage>& averages, const CommonOptions& options = {});
@@ -49,7 +49,7 @@ struct TwentyFourOptions : CommonOptions {
   int temperature_order = 0;
 };
 
-// METHODS.md 2: per temperature run, 24 stations (each axis up and down, four rotations about the
+// docs/methods.md section 2: per temperature run, 24 stations (each axis up and down, four rotations about the
 // vertical); thermometer correction from the reference thermometers; temperature coefficients from
 // the runs at several temperatures.
 Outcome twenty_four_position(const std::vector<Sample>& samples, const std::vector<Station>& stations,

@@ -1,4 +1,4 @@
-// Thermometer correction against reference thermometers (METHODS.md 2): T = c0 + c1 t + c2 t^2 +
+// Thermometer correction against reference thermometers (docs/methods.md section 2): T = c0 + c1 t + c2 t^2 +
 // c3 t^3 with t the tool's raw reading and T the average of the reference thermometers.
 #pragma once
 

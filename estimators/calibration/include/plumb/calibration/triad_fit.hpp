@@ -1,4 +1,4 @@
-// The six-face fit at the heart of the 6- and 24-position procedures (METHODS.md 3), done
+// The six-face fit at the heart of the 6- and 24-position procedures (docs/methods.md section 3), done
 // directly in the form of plumb::TriadModel, which makes it exact:
 //   raw u = bias + A (a + k2 .* a^2),  A = S^-1.
 // With axis j up (a = +g e_j) and down (a = -g e_j):
@@ -29,7 +29,7 @@ struct TriadFit {
   TriadVector params = TriadVector::Zero();
   TriadCovariance covariance = TriadCovariance::Zero();
   double chi2 = 0;   // of the 3 redundant equations (3 degrees of freedom)
-  // The same in the form of METHODS.md 3: output_i = k_i (a_i + b_i + k2_i a_i^2 + sum_j m_ij a_j),
+  // The same in the form of docs/methods.md section 3: output_i = k_i (a_i + b_i + k2_i a_i^2 + sum_j m_ij a_j),
   // order k (3), b (3, m/s^2), k2 (3), m (6: xy xz yx yz zx zy).
   Eigen::Matrix<double, 15, 1> method_params = Eigen::Matrix<double, 15, 1>::Zero();
   Eigen::Matrix<double, 15, 15> method_covariance = Eigen::Matrix<double, 15, 15>::Zero();

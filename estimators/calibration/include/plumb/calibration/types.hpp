@@ -23,7 +23,7 @@ class CalibrationError : public std::runtime_error {
 };
 
 // Where the tool is at a station. "+x" means the x axis points up, so the accelerometers read
-// f = +g along x (CONVENTIONS.md: at rest f = -G). "-z@90" adds the turntable rotation about the
+// f = +g along x (docs/conventions.md: at rest f = -G). "-z@90" adds the turntable rotation about the
 // vertical (0, 90, 180, 270). "any" is an unknown orientation (least-squares and magnetometer).
 struct Orientation {
   int axis = -1;          // 0, 1, 2 for x, y, z; -1 unknown

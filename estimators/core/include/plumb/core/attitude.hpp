@@ -1,4 +1,4 @@
-// Frames and closed-form attitude of shared CONVENTIONS.md: C_n^b = R3(T) R2(I) R3(A).
+// Frames and closed-form attitude of docs/conventions.md: C_n^b = R3(T) R2(I) R3(A).
 #pragma once
 
 #include <string>
@@ -15,7 +15,7 @@ double wrap_deg_360(double deg);
 // Wraps an angle difference to (-180, 180].
 double wrap_deg_180(double deg);
 
-Eigen::Matrix3d rot1(double a);  // frame rotations (CONVENTIONS.md)
+Eigen::Matrix3d rot1(double a);  // frame rotations (docs/conventions.md)
 Eigen::Matrix3d rot2(double a);
 Eigen::Matrix3d rot3(double a);
 

@@ -8,7 +8,7 @@
 //   a solves a + k2 .* a.^2 = w  (per axis)               second-order (non-linear) term
 // The version-2 terms (bias_temp2, bias_temp3, sensor_scale_temp1..3) put the temperature drift
 // where a real sensor has it, on its own output before the matrix that maps sensor axes to tool
-// axes (METHODS.md 3: output_i = k_i(T) (a_i + b_i(T) + ...)). With them all zero the model is
+// axes (docs/methods.md section 3: output_i = k_i(T) (a_i + b_i(T) + ...)). With them all zero the model is
 // version 1 exactly, and a version-1 file means what it always meant.
 // The thermometer reading t is corrected first: T = c0 + c1 t + c2 t^2 + c3 t^3.
 #pragma once

@@ -1,5 +1,5 @@
 // One attitude estimate as the estimators produce it (no DDS); components map it onto
-// plumb::topics::Attitude and the Attitude CSV of CONVENTIONS.md.
+// plumb::topics::Attitude and the Attitude CSV of docs/conventions.md.
 #pragma once
 
 #include <array>
@@ -9,7 +9,7 @@
 
 namespace plumb {
 
-// What a navigator (strapdown) adds to an attitude estimate: CONVENTIONS.md "Navigation".
+// What a navigator (strapdown) adds to an attitude estimate: docs/conventions.md "Navigation".
 struct NavigationState {
   std::array<double, 3> position_m{};       // north, east, down from the collar
   std::array<double, 3> velocity_mps{};     // vn, ve, vd

@@ -1,4 +1,4 @@
-// One sensor sample in the tool frame, per shared CONVENTIONS.md. This is the math libraries'
+// One sensor sample in the tool frame, per docs/conventions.md. This is the math libraries'
 // own type (no DDS); components convert it to and from plumb::topics::SensorSample.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The CSV files of shared CONVENTIONS.md: sensor CSV (read and write), attitude CSV and truth CSV
+// The CSV files of docs/conventions.md: sensor CSV (read and write), attitude CSV and truth CSV
 // (write, and read for the tools that compare). UTF-8, one header line, '#' comment lines, commas.
 #pragma once
 
@@ -69,7 +69,7 @@ void write_sensor_row(std::ostream& out, const Sample& s, bool with_gyro, bool w
 // magnetic_toolface_deg, inclination_sd_deg, azimuth_sd_deg, toolface_sd_deg, dip_deg, total_g,
 // total_b, samples_used, azimuth_valid, toolface_valid, estimator, reason. t is the window end.
 // A navigator's file (with_navigation) has north_m,east_m,down_m,vn_mps,ve_mps,vd_mps right after
-// `valid` (CONVENTIONS.md), and their standard deviations, still and zupt_count, azimuth_reference
+// `valid` (docs/conventions.md), and their standard deviations, still and zupt_count, azimuth_reference
 // at the end.
 void write_attitude_header(std::ostream& out, bool with_navigation = false);
 void write_attitude_row(std::ostream& out, const Estimate& e, bool with_navigation = false);

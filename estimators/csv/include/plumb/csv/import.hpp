@@ -1,5 +1,5 @@
 // Reading other loggers' sensor CSV files as they are: which of their columns holds which plumb
-// quantity, in which units, and how their sensor axes sit in the tool frame of CONVENTIONS.md.
+// quantity, in which units, and how their sensor axes sit in the tool frame of docs/conventions.md.
 // The command-line forms (`--column`, `--units`, `--axes`) are parsed here so that every tool
 // accepts the same text and refuses it with the same line.
 #pragma once

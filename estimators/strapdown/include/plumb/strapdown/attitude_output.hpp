@@ -1,6 +1,6 @@
 // Inclination, azimuth and gravity toolface of the navigator's attitude, with standard deviations
 // propagated from the filter's attitude-error covariance through the actual Jacobian of (I, A, T)
-// at the actual attitude (issue 14): no small-angle form, so the azimuth and toolface sigma grow
+// at the actual attitude: no small-angle form, so the azimuth and toolface sigma grow
 // without bound as sinI -> 0 (vertical, or hanging upside down at I = 180 deg).
 #pragma once
 

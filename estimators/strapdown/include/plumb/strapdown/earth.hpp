@@ -1,5 +1,5 @@
 // The earth as the navigator sees it: a flat local-level NED frame fixed at the hole's collar,
-// turning with the earth (CONVENTIONS.md "Navigation").
+// turning with the earth (docs/conventions.md "Navigation").
 //
 // Why flat earth is enough at drilling speeds (numbers for a 1-hour run):
 // - Transport rate w_en = v / R: at 0.1 m/s (drilling runs at 0.01-0.1 m/s) it is

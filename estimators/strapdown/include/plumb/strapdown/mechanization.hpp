@@ -1,4 +1,4 @@
-// Strapdown mechanization in the collar's local-level NED frame (METHODS.md section 4), in two
+// Strapdown mechanization in the collar's local-level NED frame (docs/methods.md section 4), in two
 // rates, as inertial navigation systems do:
 // - per reading (the minor step), only the motion relative to the tool frame at the last full
 //   update (b0): the attitude increment and the velocity and position sums the step adds there;

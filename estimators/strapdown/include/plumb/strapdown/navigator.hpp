@@ -52,7 +52,7 @@ struct NavigatorConfig {
   double still_accel_drift_tol = 0.002;  // m/s^2
   double still_depth_tol_m = 0.01;
   double align_s = 30;                 // longest stretch of the first still period used to align
-  // Azimuth gating (issue 18).
+  // Azimuth gating: a stop whose field disagrees with the reference gives no azimuth update.
   double field_tol_uT = 0.5;
   double dip_tol = 0.3 * 3.14159265358979323846 / 180.0;
   double mag_heading_sd = 0.05 * 3.14159265358979323846 / 180.0;  // model error per still period

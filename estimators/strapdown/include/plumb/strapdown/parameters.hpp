@@ -1,4 +1,4 @@
-// The strapdown plugin's named parameters (issue 8 item 1, issue 18) and their mapping onto
+// The strapdown plugin's named parameters and their mapping onto
 // NavigatorConfig. Unknown names and bad values throw estimator::ParameterError.
 #pragma once
 

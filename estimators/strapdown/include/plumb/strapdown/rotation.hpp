@@ -1,5 +1,5 @@
 // Rotation helpers of the navigator. The attitude is kept as the unit quaternion q whose rotation
-// matrix is C_b^n (tool to navigation frame); CONVENTIONS.md's C_n^b is its transpose.
+// matrix is C_b^n (tool to navigation frame); docs/conventions.md's C_n^b is its transpose.
 #pragma once
 
 #include <cmath>

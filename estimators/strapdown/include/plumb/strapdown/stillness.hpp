@@ -1,5 +1,5 @@
 // Stillness detection for zero-velocity updates. Two detectors over a short sliding window:
-// - Magnitude (METHODS.md section 4, the source's test): every sample of the window has
+// - Magnitude (docs/methods.md section 4, the source's test): every sample of the window has
 //   | |f| - g | < accel_tol and, when a magnetometer is used, | |B| - B0 | < field_tol; plus gyro
 //   quiet (below).
 // - GLRT (foot-mounted INS, Skog et al. 2010 / OpenShoe; no magnetometer):

@@ -1,4 +1,4 @@
-// Azimuth references. The estimators measure magnetic azimuth (CONVENTIONS.md: north is magnetic);
+// Azimuth references. The estimators measure magnetic azimuth (docs/conventions.md: north is magnetic);
 // true azimuth = magnetic + declination (east positive); grid azimuth = true - convergence, the
 // grid convergence being the angle from true north to grid north, positive when grid north lies
 // east of true north (the sign every survey program states beside its grid). Every output of a

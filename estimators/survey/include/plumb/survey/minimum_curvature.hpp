@@ -1,7 +1,7 @@
 // Minimum curvature: the well path between two survey stations is the circular arc that leaves the
 // first station along its direction and arrives at the second along its own (Taylor and Mason,
 // SPE 3362, 1972; the method every survey library and contractor uses). Frames: NED of shared
-// CONVENTIONS.md, so "down" is the true vertical depth below the tie-in.
+// docs/conventions.md, so "down" is the true vertical depth below the tie-in.
 #pragma once
 
 #include <vector>

@@ -2,7 +2,7 @@
 // tool axis, the largest magnetic survey error) estimated from a run's stations, as MWD contractors'
 // multi-station analysis does: every station's |B| and dip residuals against the reference field
 // are linear in the bias (to first order), with a sensitivity set by the station's attitude.
-//   |B|' - |B| = b Bz/|B|,   Bz/|B| = cos(dip) sinI cosA + sin(dip) cosI   (CONVENTIONS.md frames)
+//   |B|' - |B| = b Bz/|B|,   Bz/|B| = cos(dip) sinI cosA + sin(dip) cosI   (docs/conventions.md frames)
 //   dip' - dip = b (cosI / |B| - sin(dip) Bz/|B|^2) / cos(dip)
 // Weighted least squares over the stations gives b and its sigma; the azimuth each station would
 // have without the bias follows from the closed-form attitude's own sensitivity to b.
@@ -31,7 +31,7 @@ AxialBiasEstimate estimate_axial_bias(const std::vector<Station>& stations, cons
                                       double sd_total_b_uT = 0.05, double sd_dip_deg = 0.05);
 
 // The magnetic azimuth a station would have measured without an axial bias `bias_uT`, from the
-// closed-form attitude of CONVENTIONS.md in the reference field.
+// closed-form attitude of docs/conventions.md in the reference field.
 double azimuth_without_axial_bias(double inclination_deg, double magnetic_azimuth_deg, double bias_uT,
                                   const ReferenceField& reference);
 

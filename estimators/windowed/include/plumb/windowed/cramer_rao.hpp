@@ -1,4 +1,4 @@
-// Cramer-Rao lower bound of the rotating-platform measurement (CONVENTIONS.md "Reference
+// Cramer-Rao lower bound of the rotating-platform measurement (docs/conventions.md "Reference
 // scenario"): six channels (G and B, tool frame) in white noise sigma_a (each accelerometer axis)
 // and sigma_m (each magnetometer axis); unknowns theta = (I, A, T0, rate) with T = T0 + rate t;
 // g, B and dip known. J = sum_k H_k^T Sigma^-1 H_k with H_k = dh_k/dtheta; bound = sqrt(diag J^-1).
@@ -30,7 +30,7 @@ struct CrbResult {
 
 CrbResult cramer_rao_bound(const CrbCase& c);
 
-// Noise standard deviations from SNRs in dB (CONVENTIONS.md "Noise and signal-to-noise ratio").
+// Noise standard deviations from SNRs in dB (docs/conventions.md "Noise and signal-to-noise ratio").
 double sigma_from_snr(double amplitude, double snr_db);
 
 }  // namespace plumb::windowed

@@ -1,4 +1,4 @@
-// Standard deviations of the attitude angles an estimator computes from noisy inputs (issue 14):
+// Standard deviations of the attitude angles an estimator computes from noisy inputs:
 // first-order propagation J Sigma J^T through the estimator's own formulas at the estimate, with
 // the Jacobian J by central differences. No small-angle form: the same function that produced the
 // angles is differentiated, so the sigmas follow the actual attitude (and blow up near vertical,

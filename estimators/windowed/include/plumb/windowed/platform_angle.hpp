@@ -1,5 +1,5 @@
 // The platform angle found from the signals themselves: the magnetic toolface M = atan2(-By, Bx)
-// turns with the platform (CONVENTIONS.md). Its noisy per-sample values are unwrapped and
+// turns with the platform (docs/conventions.md). Its noisy per-sample values are unwrapped and
 // replaced by the smoothest model the data allow: a polynomial in time of degree 1..3 when its
 // residuals are no larger than the measured noise (constant speed, ramps), else a short local
 // quadratic smoother (stick-slip). Demodulating against a smooth angle keeps magnetometer noise

@@ -1,4 +1,4 @@
-// Issue 17 item 3 and issue 14 item 3: an estimate is only as good as the assumptions behind it.
+// An estimate is only as good as the assumptions behind it.
 // Every windowed plugin compares the window's |G|, |B| and dip with a reference (parameters, or
 // learnt from the first window that looks like the Earth) and refuses, with the reason and
 // standard deviations of 0 (unknown), what departs beyond the stated tolerance; and it clears the
@@ -17,7 +17,7 @@ namespace plumb::windowed {
 using estimator::ParameterReader;
 
 // What a reference learnt from the data must look like: the Earth (gravity 9.78-9.83 m/s^2, the
-// CONVENTIONS.md reference scenario's 10 included; total field 22-67 uT), with some margin.
+// docs/conventions.md reference scenario's 10 included; total field 22-67 uT), with some margin.
 inline constexpr double kEarthGravityMin = 9.7, kEarthGravityMax = 10.1;  // m/s^2
 inline constexpr double kEarthFieldMin = 20, kEarthFieldMax = 70;         // uT
 

@@ -1,5 +1,5 @@
 // The samples of one estimation window, column by column, in the quantities the formulas use:
-// gravity G = -f (CONVENTIONS.md) and the field B, tool frame.
+// gravity G = -f (docs/conventions.md) and the field B, tool frame.
 #pragma once
 
 #include <cstddef>

@@ -1,6 +1,6 @@
 // The CDR form of any plumb::topics type: XCDR1, little-endian, behind the 4-byte encapsulation
 // header (00 01 00 00, CDR_LE), byte for byte what both DDS vendors put on the wire for plumb's
-// @final types (ARCHITECTURE.md: XCDR1 on both). Written once over visit_fields, so every struct
+// @final types (docs/architecture.md: XCDR1 on both). Written once over visit_fields, so every struct
 // that the generator makes from idl/ has it, with no vendor library: a recording (MCAP message
 // encoding "cdr") and a tool reading one need nothing of DDS.
 //

@@ -1,10 +1,12 @@
-// The named IMU grades (values tabled in drilling.hpp) and their conversion to SI units.
+// The named IMU grades (values tabled in imu_model.hpp), their conversion to SI units and their
+// one-line description.
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 #include "plumb/core/attitude.hpp"
-#include "plumb/sim/drilling.hpp"
+#include "plumb/sim/imu_model.hpp"
 
 namespace plumb::sim {
 namespace {
@@ -57,6 +59,17 @@ double ImuGrade::accel_noise_sigma(double dt) const {
 
 double ImuGrade::gyro_range() const {
   return gyro_range_deg_s > 0 ? gyro_range_deg_s * kDeg : std::numeric_limits<double>::infinity();
+}
+
+std::string describe(const ImuGrade& g) {
+  std::ostringstream out;
+  out << g.name << " IMU (gyro bias " << g.gyro_bias_deg_h << " deg/h, ARW " << g.gyro_arw_deg_rt_h
+      << " deg/sqrt(h), accel bias " << g.accel_bias_mg << " mg, VRW " << g.accel_vrw_mps_rt_h << " m/s/sqrt(h), ";
+  if (g.gyro_range_deg_s > 0)
+    out << "range " << g.gyro_range_deg_s << " deg/s)";
+  else
+    out << "unlimited range)";
+  return out.str();
 }
 
 }  // namespace plumb::sim
