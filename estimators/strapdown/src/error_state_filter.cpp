@@ -20,6 +20,7 @@ StateMatrix ErrorStateFilter::dynamics(const StepIntegrals& in, const Eigen::Vec
   f.block<1, 3>(kDistance, kAtt) = (in.axis_cross_v / dt).transpose();
   f.block<1, 3>(kDistance, kVel) = (in.axis_n / dt).transpose();
   f(kVel + 2, kGravity) = 1.0;
+  f.block<3, 2>(kVel, kLever) = -in.c_lever / dt;
   return f;
 }
 
@@ -54,6 +55,11 @@ StateMatrix ErrorStateFilter::transition(const StepIntegrals& in, const Eigen::V
   phi.block<3, 1>(kVel, kGravity) = dt * (Eigen::Vector3d::UnitZ() + 0.5 * avv.col(2));
   phi(kPos + 2, kGravity) = 0.5 * dt * dt;
   phi(kDistance, kGravity) = 0.5 * dt * adv(2);
+  // The lever arm's columns enter through the velocity as the accelerometer bias's do.
+  const Eigen::Matrix<double, 3, 2> avl = -in.c_lever;
+  phi.block<3, 2>(kVel, kLever) = avl + 0.5 * avv * avl;
+  phi.block<3, 2>(kPos, kLever) = (0.5 * dt) * avl;
+  phi.block<1, 2>(kDistance, kLever) = 0.5 * adv * avl;
   return phi;
 }
 
@@ -76,24 +82,26 @@ StateMatrix ErrorStateFilter::sandwich(const StateMatrix& phi, const StateMatrix
   // phi's blocks as transition() fills them: rows of attitude (columns: attitude, gyro bias),
   // velocity (attitude, velocity, both biases), position (attitude, velocity, the identity,
   // accelerometer bias) and distance (all but position, 1 on the diagonal), each with its gravity
-  // column; the bias and gravity rows are the identity's. Products by block: 3 x 3 blocks against 3-row strips, about 60 % of the
+  // and lever-arm columns; the bias, gravity and lever-arm rows are the identity's. Products by block: 3 x 3 blocks against 3-row strips, about 60 % of the
   // multiply-adds of full rows of phi.
-  constexpr int a = kAtt, v = kVel, p = kPos, g = kGyroBias, b = kAccelBias, d = kDistance, n = kGravity;
+  constexpr int a = kAtt, v = kVel, p = kPos, g = kGyroBias, b = kAccelBias, d = kDistance, n = kGravity, l = kLever;
   StateMatrix pm = m;
   pm.middleRows<3>(a).noalias() = phi.block<3, 3>(a, a).lazyProduct(m.middleRows<3>(a)) +
                                   phi.block<3, 3>(a, g).lazyProduct(m.middleRows<3>(g));
   pm.middleRows<3>(v).noalias() =
       phi.block<3, 3>(v, a).lazyProduct(m.middleRows<3>(a)) + phi.block<3, 3>(v, v).lazyProduct(m.middleRows<3>(v)) +
       phi.block<3, 3>(v, g).lazyProduct(m.middleRows<3>(g)) + phi.block<3, 3>(v, b).lazyProduct(m.middleRows<3>(b)) +
-      phi.block<3, 1>(v, n).lazyProduct(m.row(n));
+      phi.block<3, 1>(v, n).lazyProduct(m.row(n)) + phi.block<3, 2>(v, l).lazyProduct(m.middleRows<2>(l));
   pm.middleRows<3>(p).noalias() += phi.block<3, 3>(p, a).lazyProduct(m.middleRows<3>(a)) +
                                    phi.block<3, 3>(p, v).lazyProduct(m.middleRows<3>(v)) +
                                    phi.block<3, 3>(p, b).lazyProduct(m.middleRows<3>(b)) +
-                                   phi.block<3, 1>(p, n).lazyProduct(m.row(n));
+                                   phi.block<3, 1>(p, n).lazyProduct(m.row(n)) +
+                                   phi.block<3, 2>(p, l).lazyProduct(m.middleRows<2>(l));
   pm.row(d).noalias() += phi.block<1, 3>(d, a).lazyProduct(m.middleRows<3>(a)) +
                          phi.block<1, 3>(d, v).lazyProduct(m.middleRows<3>(v)) +
                          phi.block<1, 3>(d, g).lazyProduct(m.middleRows<3>(g)) +
-                         phi.block<1, 3>(d, b).lazyProduct(m.middleRows<3>(b)) + phi(d, n) * m.row(n);
+                         phi.block<1, 3>(d, b).lazyProduct(m.middleRows<3>(b)) + phi(d, n) * m.row(n) +
+                         phi.block<1, 2>(d, l).lazyProduct(m.middleRows<2>(l));
   StateMatrix out = pm;
   out.middleCols<3>(a).noalias() = pm.middleCols<3>(a).lazyProduct(phi.block<3, 3>(a, a).transpose()) +
                                    pm.middleCols<3>(g).lazyProduct(phi.block<3, 3>(a, g).transpose());
@@ -101,15 +109,18 @@ StateMatrix ErrorStateFilter::sandwich(const StateMatrix& phi, const StateMatrix
                                    pm.middleCols<3>(v).lazyProduct(phi.block<3, 3>(v, v).transpose()) +
                                    pm.middleCols<3>(g).lazyProduct(phi.block<3, 3>(v, g).transpose()) +
                                    pm.middleCols<3>(b).lazyProduct(phi.block<3, 3>(v, b).transpose()) +
-                                   pm.col(n).lazyProduct(phi.block<3, 1>(v, n).transpose());
+                                   pm.col(n).lazyProduct(phi.block<3, 1>(v, n).transpose()) +
+                                   pm.middleCols<2>(l).lazyProduct(phi.block<3, 2>(v, l).transpose());
   out.middleCols<3>(p).noalias() += pm.middleCols<3>(a).lazyProduct(phi.block<3, 3>(p, a).transpose()) +
                                     pm.middleCols<3>(v).lazyProduct(phi.block<3, 3>(p, v).transpose()) +
                                     pm.middleCols<3>(b).lazyProduct(phi.block<3, 3>(p, b).transpose()) +
-                                    pm.col(n).lazyProduct(phi.block<3, 1>(p, n).transpose());
+                                    pm.col(n).lazyProduct(phi.block<3, 1>(p, n).transpose()) +
+                                    pm.middleCols<2>(l).lazyProduct(phi.block<3, 2>(p, l).transpose());
   out.col(d).noalias() += pm.middleCols<3>(a).lazyProduct(phi.block<1, 3>(d, a).transpose()) +
                           pm.middleCols<3>(v).lazyProduct(phi.block<1, 3>(d, v).transpose()) +
                           pm.middleCols<3>(g).lazyProduct(phi.block<1, 3>(d, g).transpose()) +
-                          pm.middleCols<3>(b).lazyProduct(phi.block<1, 3>(d, b).transpose()) + phi(d, n) * pm.col(n);
+                          pm.middleCols<3>(b).lazyProduct(phi.block<1, 3>(d, b).transpose()) + phi(d, n) * pm.col(n) +
+                          pm.middleCols<2>(l).lazyProduct(phi.block<1, 2>(d, l).transpose());
   return out;
 }
 
@@ -128,7 +139,8 @@ void ErrorStateFilter::predict(const StateMatrix& phi, double dt, const ProcessN
   symmetrize();
 }
 
-void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bias, Eigen::Vector3d& accel_bias) {
+void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bias, Eigen::Vector3d& accel_bias,
+               Eigen::Vector2d* lever) {
   // C(true) = (I + [phi x])^-1 C(est) = exp(-[phi x]) C(est): a rotation on the navigation side.
   state.q = (quaternion_from_rotation_vector(-dx.segment<3>(kAtt)) * state.q).normalized();
   state.v -= dx.segment<3>(kVel);
@@ -136,6 +148,7 @@ void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bia
   gyro_bias -= dx.segment<3>(kGyroBias);
   accel_bias -= dx.segment<3>(kAccelBias);
   state.s -= dx[kDistance];
+  if (lever != nullptr) *lever -= dx.segment<2>(kLever);
 }
 
 }  // namespace plumb::strapdown

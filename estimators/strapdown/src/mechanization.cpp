@@ -49,6 +49,7 @@ void Mechanization::begin(const NavState& state) {
   s_sum_ = 0;
   c_int_.setZero();
   axis_cross_v_int_.setZero();
+  lever_int_.setZero();
   stepped_ = false;
 }
 
@@ -117,6 +118,7 @@ void Mechanization::step(const ImuReading& a, const ImuReading& b, const ImuRead
   // The filter's integrals, by the trapezoid.
   c_int_ += (0.5 * dt) * (c_ + c1);
   axis_cross_v_int_ += 0.5 * dt * (axa + axb);
+  if (lever_model_) lever_int_ += (0.5 * dt) * (c_ * centripetal_matrix(a.w) + c1 * centripetal_matrix(b.w));
   c_ = c1;
   last_f_ = fb;
   last_axis_cross_v_ = axb;
@@ -147,6 +149,7 @@ void Mechanization::finish(NavState& state, StepIntegrals* integrals) {
     integrals->f_n += c0_ * u_;
     integrals->axis_n += c_bn.col(2);
     integrals->axis_cross_v += c0_ * axis_cross_v_int_;
+    if (lever_model_) integrals->c_lever += c0_ * lever_int_;
   }
 }
 

@@ -91,6 +91,8 @@ void Navigator::reset() {
   x_ = NavState();
   bg_.setZero();
   ba_.setZero();
+  lever_.setZero();
+  lever_model_ = false;
   kf_ = ErrorStateFilter();
   noise_.gyro_arw = config_.gyro_arw;
   noise_.accel_vrw = config_.accel_vrw;
@@ -273,6 +275,14 @@ void Navigator::shift_gyro(Input in, std::vector<Estimate>& out) {
   }
 }
 
+// A reading with the filter's estimates taken out: the biases and, turning, the centripetal
+// acceleration of the accelerometers' offset from the tool axis.
+ImuReading Navigator::reading(const Input& in) const {
+  ImuReading r{in.t, in.f - ba_, in.w - bg_};
+  if (lever_model_) r.f.noalias() -= centripetal_matrix(r.w) * lever_;
+  return r;
+}
+
 StillnessInput Navigator::detector_input(const Input& in) const {
   StillnessInput si;
   si.t = in.t;
@@ -446,10 +456,9 @@ void Navigator::process(const Input& in, std::vector<Estimate>& out) {
     before_alignment(in, out);
     return;
   }
-  const ImuReading a{prev_->t, prev_->f - ba_, prev_->w - bg_};
-  const ImuReading b{in.t, in.f - ba_, in.w - bg_};
+  const ImuReading a = reading(*prev_), b = reading(in);
   if (prev2_) {
-    const ImuReading before{prev2_->t, prev2_->f - ba_, prev2_->w - bg_};
+    const ImuReading before = reading(*prev2_);
     mech_.step(a, b, &before);
   } else {
     mech_.step(a, b);
@@ -585,10 +594,16 @@ void Navigator::align(const Input& in) {
   // relative one, it errs by the horizontal earth rate times sin(declination): 0.9 deg/h per 5 deg
   // of declination at 45 deg latitude, a gyro-bias-like error the zero-rate updates absorb.
   mech_ = Mechanization(earth_rate_ned(config_.latitude, 0.0), g_);
+  // A drilling tool turns about its own axis; a foot or a hand (no lateral-velocity update, the
+  // GLRT detector) has no such axis to be off.
+  lever_model_ = config_.lever_arm_sd > 0 && config_.lateral_velocity_update &&
+                 detector_.config().mode == StillnessConfig::Mode::Magnitude;
+  mech_.set_lever_model(lever_model_);
   x_ = NavState();
   x_.q = Eigen::Quaterniond(*c_bn).normalized();
   bg_.setZero();
   ba_.setZero();
+  lever_.setZero();
   StateMatrix p0 = StateMatrix::Zero();
   const double tilt_sd = 2.0 * deg;
   p0.block<3, 3>(kAtt, kAtt).diagonal() << tilt_sd * tilt_sd, tilt_sd * tilt_sd, heading_sd * heading_sd;
@@ -597,6 +612,7 @@ void Navigator::align(const Input& in) {
   p0.block<3, 3>(kGyroBias, kGyroBias).diagonal().setConstant(config_.gyro_bias_sd * config_.gyro_bias_sd);
   p0.block<3, 3>(kAccelBias, kAccelBias).diagonal().setConstant(config_.accel_bias_sd * config_.accel_bias_sd);
   p0(kDistance, kDistance) = depth_sd_ * depth_sd_;
+  if (lever_model_) p0.block<2, 2>(kLever, kLever).diagonal().setConstant(config_.lever_arm_sd * config_.lever_arm_sd);
   const double n = stats.count();
   const double dt = dt_nominal_ > 0 ? dt_nominal_ : 0.01;
   adopt_measured_noise(dt);
@@ -660,7 +676,7 @@ void Navigator::align(const Input& in) {
 }
 
 void Navigator::apply(const StateVector& dx) {
-  feed_back(dx, x_, bg_, ba_);
+  feed_back(dx, x_, bg_, ba_, &lever_);
   correction_ += dx;
   g_ -= dx[kGravity];
   mech_.set_gravity(g_);

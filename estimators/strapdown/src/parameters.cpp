@@ -80,6 +80,7 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"nhc_sd_mps", "0.01", "lateral velocity of a drilling tool, 1 sigma (m/s)"},
       {"depth_sd_m", "", "measured depth noise, 1 sigma (m); empty: 0.01 or what the depth reports show before alignment, whichever is larger"},
       {"depth_interval_s", "1", "seconds between measured-depth updates"},
+      {"lever_arm_sd_m", "0.01", "how far the accelerometers may sit off the tool axis, 1 sigma (m): turning, they feel its centripetal acceleration; 0: not modelled"},
       {"smooth", "0", "offline backward (RTS) smoother: push() emits nothing, flush() emits every row smoothed"},
       {"max_gap_s", "1", "a time step longer than this is a gap: reported, bridged by prediction only (s)"},
       {"gyro_time_offset_s", "0", "gyro readings were measured this long after their time stamp (s)"},
@@ -164,6 +165,7 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   c.depth_sd = depth_sd.value_or(0.01);
   c.depth_noise_stated = depth_sd.has_value();
   c.depth_interval_s = r.number("depth_interval_s", 0, 3600);
+  c.lever_arm_sd = r.number("lever_arm_sd_m", 0, 1);
   c.smooth = r.boolean("smooth");
   c.max_gap_s = r.number("max_gap_s", 1e-6, 1e6);
   c.gyro_time_offset_s = r.number("gyro_time_offset_s", -1, 1);

@@ -12,10 +12,15 @@
 //               value is rarely known to better than 1e-3 m/s^2 and one learnt from |f| at
 //               alignment is off by the accelerometer bias along the vertical and the mean's
 //               noise; with depth the filter would otherwise turn either into tilt
+//   dr  (17-18): error of the accelerometers' offset from the tool axis (tool x, y; m): turning at w,
+//               they feel the centripetal w x (w x r) on top of the axis' motion, 0.9 m/s^2 at 90
+//               rpm and 1 cm, which a filter without it learns as an accelerometer bias while the
+//               string turns and carries, wrong, into the next stop's tilt
 // Continuous dynamics (flat earth, earth.hpp), C = C_b^n, f_n = C f:
-//   phi' = -w_ie x phi - C dbg + C n_g          dv' = -f_n x phi - 2 w_ie x dv - C dba + e_D dg + C n_a
+//   phi' = -w_ie x phi - C dbg + C n_g          dv' = -f_n x phi - 2 w_ie x dv - C dba + e_D dg - C L dr + C n_a
 //   dp'  = dv        dbg' = n_bg        dba' = n_ba (random walks)
-//   ds'  = (axis x v) . phi + axis . dv        (axis = C e_z, the tool axis in NED)       dg' = 0
+//   ds'  = (axis x v) . phi + axis . dv        (axis = C e_z, the tool axis in NED)       dg' = 0, dr' = 0
+//   (L = centripetal_matrix(w): w x (w x r) = L r for r = (r_x, r_y, 0))
 // Measurements are residuals r = h(estimate) - z = H dx + noise.
 #pragma once
 
@@ -26,12 +31,13 @@
 
 namespace plumb::strapdown {
 
-inline constexpr int kStates = 17;
+inline constexpr int kStates = 19;
 using StateVector = Eigen::Matrix<double, kStates, 1>;
 using StateMatrix = Eigen::Matrix<double, kStates, kStates>;
 
 namespace index {
-inline constexpr int kAtt = 0, kVel = 3, kPos = 6, kGyroBias = 9, kAccelBias = 12, kDistance = 15, kGravity = 16;
+inline constexpr int kAtt = 0, kVel = 3, kPos = 6, kGyroBias = 9, kAccelBias = 12, kDistance = 15, kGravity = 16,
+                     kLever = 17;
 }
 
 // Noise densities in SI units.
@@ -96,6 +102,7 @@ class ErrorStateFilter {
 };
 
 // Applies an error estimate to the whole-value state (and the bias estimates).
-void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bias, Eigen::Vector3d& accel_bias);
+void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bias, Eigen::Vector3d& accel_bias,
+               Eigen::Vector2d* lever = nullptr);
 
 }  // namespace plumb::strapdown

@@ -60,8 +60,18 @@ struct StepIntegrals {
   Eigen::Vector3d f_n = Eigen::Vector3d::Zero();    // integral of C_b^n f
   Eigen::Vector3d axis_n = Eigen::Vector3d::Zero(); // integral of the tool axis C_b^n e_z
   Eigen::Vector3d axis_cross_v = Eigen::Vector3d::Zero();  // integral of axis x v
+  Eigen::Matrix<double, 3, 2> c_lever = Eigen::Matrix<double, 3, 2>::Zero();  // integral of C_b^n L(w)
   void clear() { *this = StepIntegrals(); }
 };
+
+// The centripetal acceleration of a point r = (r_x, r_y, 0) off the tool axis, w x (w x r) =
+// L(w) r: L's columns are w x (w x e_x) and w x (w x e_y).
+inline Eigen::Matrix<double, 3, 2> centripetal_matrix(const Eigen::Vector3d& w) {
+  const double w2 = w.squaredNorm();
+  Eigen::Matrix<double, 3, 2> l;
+  l << w.x() * w.x() - w2, w.x() * w.y(), w.y() * w.x(), w.y() * w.y() - w2, w.z() * w.x(), w.z() * w.y();
+  return l;
+}
 
 class Mechanization {
  public:
@@ -87,6 +97,8 @@ class Mechanization {
   const Eigen::Vector3d& earth_rate() const { return w_ie_; }
   double gravity() const { return g_n_.z(); }
   void set_gravity(double g) { g_n_.z() = g; }
+  // Whether the filter models the accelerometers' offset from the tool axis (StepIntegrals::c_lever).
+  void set_lever_model(bool on) { lever_model_ = on; }
 
   // Largest rotation (rad) of one sub-step. The Magnus step is exact about a fixed axis; for a
   // turning axis its 5th-order term grows with the angle, so fast rotary drilling at a low rate
@@ -111,6 +123,8 @@ class Mechanization {
   double s_sum_ = 0;
   Eigen::Matrix3d c_int_ = Eigen::Matrix3d::Zero();
   Eigen::Vector3d axis_cross_v_int_ = Eigen::Vector3d::Zero();
+  Eigen::Matrix<double, 3, 2> lever_int_ = Eigen::Matrix<double, 3, 2>::Zero();
+  bool lever_model_ = false;
   // Of the last reading (valid after the first step since begin()): C~ f, and axis x velocity in b0.
   Eigen::Vector3d last_f_ = Eigen::Vector3d::Zero(), last_axis_cross_v_ = Eigen::Vector3d::Zero();
   bool stepped_ = false;

@@ -76,6 +76,10 @@ struct NavigatorConfig {
   double nhc_sd = 0.01;                // m/s
   double depth_sd = 0.01;              // m
   double depth_interval_s = 1;
+  // How far the accelerometers may sit off the tool axis (1 sigma, m; the filter's lever-arm
+  // states). 0: not modelled (nor without lateral_velocity_update or with the GLRT detector: a foot
+  // or a hand has no tool axis).
+  double lever_arm_sd = 0.01;
   // Whether the user stated the noise (parameters.cpp: the figures given, not a preset). What was
   // not stated is read off the data before alignment (noise_floor.hpp) for the magnitude detector
   // and, where it is larger than the preset, for the filter too.
@@ -144,6 +148,7 @@ class Navigator {
   void fill_attitude(Estimate& e, const NavState& x, const StateMatrix& p) const;
   void apply(const StateVector& dx);
   StillnessInput detector_input(const Input& in) const;
+  ImuReading reading(const Input& in) const;
   void refresh_noise(double dt);
   void refresh_gyro_tolerance();
   double field_azimuth() const;
@@ -180,6 +185,8 @@ class Navigator {
   double aligned_at_ = 0;
   NavState x_;
   Eigen::Vector3d bg_ = Eigen::Vector3d::Zero(), ba_ = Eigen::Vector3d::Zero();
+  Eigen::Vector2d lever_ = Eigen::Vector2d::Zero();  // accelerometers' offset from the tool axis (x, y), m
+  bool lever_model_ = false;
   ErrorStateFilter kf_;
   ProcessNoise noise_;
   Mechanization mech_{Eigen::Vector3d::Zero(), 9.80665};
