@@ -118,7 +118,12 @@ void Mechanization::step(const ImuReading& a, const ImuReading& b, const ImuRead
   // The filter's integrals, by the trapezoid.
   c_int_ += (0.5 * dt) * (c_ + c1);
   axis_cross_v_int_ += 0.5 * dt * (axa + axb);
-  if (lever_model_) lever_int_ += (0.5 * dt) * (c_ * centripetal_matrix(a.w) + c1 * centripetal_matrix(b.w));
+  if (lever_model_) {
+    // C~ L(w) at b is the next step's value at a.
+    const Eigen::Matrix<double, 3, 2> lb = c1.lazyProduct(centripetal_matrix(b.w));
+    lever_int_ += (0.5 * dt) * ((stepped_ ? last_lever_ : Eigen::Matrix<double, 3, 2>(c_.lazyProduct(centripetal_matrix(a.w)))) + lb);
+    last_lever_ = lb;
+  }
   c_ = c1;
   last_f_ = fb;
   last_axis_cross_v_ = axb;

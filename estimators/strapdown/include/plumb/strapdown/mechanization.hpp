@@ -123,7 +123,7 @@ class Mechanization {
   double s_sum_ = 0;
   Eigen::Matrix3d c_int_ = Eigen::Matrix3d::Zero();
   Eigen::Vector3d axis_cross_v_int_ = Eigen::Vector3d::Zero();
-  Eigen::Matrix<double, 3, 2> lever_int_ = Eigen::Matrix<double, 3, 2>::Zero();
+  Eigen::Matrix<double, 3, 2> lever_int_ = Eigen::Matrix<double, 3, 2>::Zero(), last_lever_ = Eigen::Matrix<double, 3, 2>::Zero();
   bool lever_model_ = false;
   // Of the last reading (valid after the first step since begin()): C~ f, and axis x velocity in b0.
   Eigen::Vector3d last_f_ = Eigen::Vector3d::Zero(), last_axis_cross_v_ = Eigen::Vector3d::Zero();
