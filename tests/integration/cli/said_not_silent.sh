@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# What a new user met that looked like success or said nothing: a recording of plumb-sim alone read
+# as empty, plugins without one valid row exiting 0, a misspelt plugin or transport name exiting 1,
+# a recorder or a survey waiting in silence, a repair naming a file that is not there. The DDS
+# parts run across vendors (the simulator on Fast DDS, the listeners on Cyclone DDS).
+# usage: said_not_silent.sh BIN_DIR DOMAIN
+set -uo pipefail
+bin=$1
+export PLUMB_DOMAIN_ID=$2
+unset PLUMB_TRANSPORT PLUMB_INTERFACE PLUMB_SECURITY
+here=$(dirname "$0")
+. "$here/../lib.sh"
+. "$here/../wait.sh"
+start_work_with_programs
+
+# expect_usage "description" "stderr pattern" command...: exit status 2 and one stderr line.
+expect_usage() {
+  local what=$1 pattern=$2; shift 2
+  local err rc=0
+  err=$("$@" 2>&1 >/dev/null) || rc=$?
+  if [ $rc -ne 2 ]; then fail "$what: exit $rc (expected 2, a usage error): $err"; return; fi
+  if [ "$(printf '%s\n' "$err" | grep -c .)" -ne 1 ]; then fail "$what: expected one stderr line, got: $err"; return; fi
+  if ! printf '%s' "$err" | grep -qE -- "$pattern"; then fail "$what: stderr '$err' lacks /$pattern/"; return; fi
+  pass "$what: $err"
+}
+
+# --- A misspelt plugin or transport name is a usage error naming the close matches.
+expect_usage "plumb-estimator --plugin" "unknown estimator 'compensate': did you mean compensated\?" \
+  timeout 20 "$bin/plumb-estimator" --plugin compensate
+expect_usage "plumb estimate -e" "did you mean compensated\?" "$bin/plumb" estimate -e compensate --input /dev/null
+expect_usage "plumb compare -e" "did you mean integral\?" "$bin/plumb" compare -e integrl --input /dev/null
+expect_usage "plumb topic --transport" "unknown transport 'fastds': did you mean fastdds\?" \
+  timeout 20 "$bin/plumb" topic list --transport fastds --wait 0
+expect_usage "plumb transports --transport" "did you mean cyclonedds\?" "$bin/plumb" transports --transport cyclone
+expect_usage "plumb-sim --transport" "did you mean fastdds\?" timeout 20 "$bin/plumb-sim" --transport fastdd --duration 1
+expect_usage "\$PLUMB_TRANSPORT" "did you mean cyclonedds\?" env PLUMB_TRANSPORT=cyclonedd timeout 20 "$bin/plumb-survey" --tool-id t --file "$work/s.txt" --skip-check gravity --skip-check field --skip-check dip
+expect_usage "example subscriber --transport" "did you mean fastdds\?" timeout 20 "$bin/plumb-example-subscriber" --transport fast-dds
+finish
