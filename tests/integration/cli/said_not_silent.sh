@@ -35,4 +35,20 @@ expect_usage "plumb transports --transport" "did you mean cyclonedds\?" "$bin/pl
 expect_usage "plumb-sim --transport" "did you mean fastdds\?" timeout 20 "$bin/plumb-sim" --transport fastdd --duration 1
 expect_usage "\$PLUMB_TRANSPORT" "did you mean cyclonedds\?" env PLUMB_TRANSPORT=cyclonedd timeout 20 "$bin/plumb-survey" --tool-id t --file "$work/s.txt" --skip-check gravity --skip-check field --skip-check dip
 expect_usage "example subscriber --transport" "did you mean fastdds\?" timeout 20 "$bin/plumb-example-subscriber" --transport fast-dds
+
+# --- A recording made while only plumb-sim runs: raw is read, and said.
+timeout 60 "$bin/plumb-sim" --inclination 2 --azimuth 45 --rpm 60 --loop --wait-subscribers 0 --transport fastdds > "$work/sim.log" 2>&1 &
+pids+=($!)
+timeout 30 "$bin/plumb" record -o "$work/run.mcap" --duration 4 --transport cyclonedds > /dev/null 2> "$work/rec.err" ||
+  fail "record beside plumb-sim: $(cat "$work/rec.err")"
+"$bin/plumb" export "$work/run.mcap" -o "$work/run.csv" 2> "$work/export.err" && [ "$(grep -vc '^#' "$work/run.csv")" -gt 100 ] &&
+  grep -q "reading plumb/sensor/raw ([1-9][0-9]* messages; plumb/sensor/calibrated holds none)" "$work/export.err" &&
+  pass "export reads raw when calibrated is empty: $(head -1 "$work/export.err")" || fail "export: $(cat "$work/export.err")"
+"$bin/plumb" estimate -e compensated --input "$work/run.mcap" --window 1 > "$work/est.csv" 2> "$work/est.err" &&
+  [ "$(grep -c . "$work/est.csv")" -gt 2 ] && grep -q "reading plumb/sensor/raw" "$work/est.err" &&
+  pass "estimate reads raw: $(grep -c . "$work/est.csv") lines" || fail "estimate on the recording: $(cat "$work/est.err")"
+"$bin/plumb" compare --input "$work/run.mcap" -e compensated --window 1 > "$work/cmp_run.out" 2> "$work/cmp_run.err" &&
+  grep -qE "^compensated +[1-9]" "$work/cmp_run.out" && pass "compare reads raw" || fail "compare on the recording: $(cat "$work/cmp_run.out" "$work/cmp_run.err")"
+expect_failure "export of the empty topic" "no message on 'plumb/sensor/calibrated'; the recording holds .*plumb/sensor/raw \([1-9][0-9]* messages\)" \
+  "$bin/plumb" export "$work/run.mcap" --topic plumb/sensor/calibrated
 finish
