@@ -66,7 +66,7 @@ int run_estimate(const EstimateOptions& o) {
     for (const auto& [reason, n] : slot.estimator->counters()) std::cerr << ", " << n << " " << reason;
     std::cerr << '\n';
   }
-  return 0;
+  return check_valid_estimates("plumb estimate", runner);
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 namespace plumb::estimator {
 
 void Runner::add(std::string name, EstimatorPtr estimator) {
-  slots_.push_back({std::move(name), std::move(estimator), {}, 0, 0});
+  slots_.push_back({std::move(name), std::move(estimator), {}, 0, 0, {}});
 }
 
 std::vector<Info> Runner::infos() const {
@@ -33,7 +33,10 @@ void Runner::deliver(Slot& slot, std::vector<Estimate>& made, const Sink& sink) 
   for (auto& e : made) {
     e.estimator = slot.name;
     ++slot.estimates;
-    if (!e.valid) ++slot.invalid;
+    if (!e.valid) {
+      ++slot.invalid;
+      slot.last_reason = e.reason;
+    }
     if (sink) sink(slot, e);
   }
   made.clear();

@@ -36,6 +36,19 @@ expect_usage "plumb-sim --transport" "did you mean fastdds\?" timeout 20 "$bin/p
 expect_usage "\$PLUMB_TRANSPORT" "did you mean cyclonedds\?" env PLUMB_TRANSPORT=cyclonedd timeout 20 "$bin/plumb-survey" --tool-id t --file "$work/s.txt" --skip-check gravity --skip-check field --skip-check dip
 expect_usage "example subscriber --transport" "did you mean fastdds\?" timeout 20 "$bin/plumb-example-subscriber" --transport fast-dds
 
+# --- A plugin without one valid row: exit 1, with its last reason and counts (no DDS).
+"$bin/plumb-sim" --csv "$work/turning" --rpm 60 --duration 4 > /dev/null 2>&1 || fail "plumb-sim --csv"
+rc=0
+"$bin/plumb" estimate -e static --input "$work/turning/sensor.csv" --window 1 > "$work/static.csv" 2> "$work/static.err" || rc=$?
+[ $rc -eq 1 ] && grep -qE "^plumb estimate: static made no valid estimate \(0 of [1-9][0-9]*; last reason: platform rotating" "$work/static.err" &&
+  pass "estimate: no valid row is a failure: $(tail -1 "$work/static.err")" || fail "estimate, no valid row: exit $rc, $(cat "$work/static.err")"
+rc=0
+"$bin/plumb" compare --input "$work/turning/sensor.csv" -e compensated -e static --window 1 > "$work/cmp.out" 2> "$work/cmp.err" || rc=$?
+[ $rc -eq 1 ] && grep -q "^compensated" "$work/cmp.out" && grep -q "static made no valid estimate" "$work/cmp.err" &&
+  pass "compare: the table, then the plugin that made no valid row: exit 1" || fail "compare, no valid row: exit $rc, $(cat "$work/cmp.out" "$work/cmp.err")"
+"$bin/plumb" estimate -e compensated --input "$work/turning/sensor.csv" --window 1 > /dev/null 2>&1 &&
+  pass "estimate with valid rows exits 0" || fail "compensated on the turning platform failed"
+
 # --- A recording made while only plumb-sim runs: raw is read, and said.
 timeout 60 "$bin/plumb-sim" --inclination 2 --azimuth 45 --rpm 60 --loop --wait-subscribers 0 --transport fastdds > "$work/sim.log" 2>&1 &
 pids+=($!)
