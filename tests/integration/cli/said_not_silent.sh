@@ -49,6 +49,16 @@ rc=0
 "$bin/plumb" estimate -e compensated --input "$work/turning/sensor.csv" --window 1 > /dev/null 2>&1 &&
   pass "estimate with valid rows exits 0" || fail "compensated on the turning platform failed"
 
+# --- A recorder with nothing to record says so, and fails.
+rc=0
+timeout 30 "$bin/plumb" record -o "$work/empty.mcap" --duration 4 --transport cyclonedds > /dev/null 2> "$work/empty.err" || rc=$?
+grep -q "^plumb record: nothing received for 3 s on any plumb topic; no topic has a writer on domain $PLUMB_DOMAIN_ID" "$work/empty.err" &&
+  pass "the recorder says what it waits for" || fail "recorder silent: $(cat "$work/empty.err")"
+[ $rc -eq 1 ] && grep -q "nothing recorded" "$work/empty.err" && pass "nothing recorded: exit 1, $(tail -1 "$work/empty.err")" ||
+  fail "empty recording: exit $rc, $(cat "$work/empty.err")"
+expect_failure "estimate on a recording without messages" "no sensor message on plumb/sensor/calibrated or plumb/sensor/raw; the recording holds .*\(0 messages\)" \
+  "$bin/plumb" estimate -e compensated --input "$work/empty.mcap"
+
 # --- A recording made while only plumb-sim runs: raw is read, and said.
 timeout 60 "$bin/plumb-sim" --inclination 2 --azimuth 45 --rpm 60 --loop --wait-subscribers 0 --transport fastdds > "$work/sim.log" 2>&1 &
 pids+=($!)
