@@ -204,14 +204,15 @@ int run_repair(const RecordOptions& o) {
     });
     for (const auto& md : reader.metadata()) writer.write_metadata(md);
     writer.close();
-    std::cerr << "plumb record: repaired " << o.repair << " -> " << out << ": " << writer.statistics().message_count
-              << " message(s) in " << writer.statistics().chunk_count << " chunk(s)";
+    what = std::to_string(writer.statistics().message_count) + " message(s) in " +
+           std::to_string(writer.statistics().chunk_count) + " chunk(s)";
     if (reader.readable_bytes() < reader.file_size())
-      std::cerr << "; bytes " << reader.readable_bytes() << " to " << reader.file_size() << " were not readable";
-    std::cerr << '\n';
+      what += "; bytes " + std::to_string(reader.readable_bytes()) + " to " + std::to_string(reader.file_size()) + " were not readable";
   }
   warn_problems("plumb record", reader);
   if (o.output.empty()) std::filesystem::rename(out, o.repair);
+  std::cerr << "plumb record: repaired " << o.repair << (o.output.empty() ? " in place" : " -> " + o.output) << ": " << what
+            << '\n';
   return 0;
 }
 

@@ -74,4 +74,9 @@ timeout 30 "$bin/plumb" record -o "$work/run.mcap" --duration 4 --transport cycl
   grep -qE "^compensated +[1-9]" "$work/cmp_run.out" && pass "compare reads raw" || fail "compare on the recording: $(cat "$work/cmp_run.out" "$work/cmp_run.err")"
 expect_failure "export of the empty topic" "no message on 'plumb/sensor/calibrated'; the recording holds .*plumb/sensor/raw \([1-9][0-9]* messages\)" \
   "$bin/plumb" export "$work/run.mcap" --topic plumb/sensor/calibrated
+
+# --- A repair in place names the file it repaired.
+"$bin/plumb" record --repair "$work/run.mcap" > /dev/null 2> "$work/repair.err" &&
+  grep -q "repaired $work/run.mcap in place" "$work/repair.err" && ! grep -q "\.repaired" "$work/repair.err" && [ ! -e "$work/run.mcap.repaired" ] &&
+  pass "repair: $(cat "$work/repair.err")" || fail "repair: $(cat "$work/repair.err")"
 finish
