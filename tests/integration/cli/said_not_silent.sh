@@ -79,4 +79,12 @@ expect_failure "export of the empty topic" "no message on 'plumb/sensor/calibrat
 "$bin/plumb" record --repair "$work/run.mcap" > /dev/null 2> "$work/repair.err" &&
   grep -q "repaired $work/run.mcap in place" "$work/repair.err" && ! grep -q "\.repaired" "$work/repair.err" && [ ! -e "$work/run.mcap.repaired" ] &&
   pass "repair: $(cat "$work/repair.err")" || fail "repair: $(cat "$work/repair.err")"
+
+# --- A survey of a tool nobody publishes names the tools it hears.
+timeout 30 "$bin/plumb" topic pub plumb/attitude/compensated tool_id=rig7 inclination_deg=1 --count 40 --rate 5 --wait 0 \
+  > /dev/null 2>&1 &
+pids+=($!)
+timeout 30 "$bin/plumb-survey" --tool-id rig1 --estimator compensated --file "$work/survey.txt" --skip-check gravity --skip-check field --skip-check dip --timeout 5 > /dev/null 2> "$work/survey.err"
+grep -q "no attitude for tool 'rig1' on plumb/attitude/compensated for 3 s (1 writer(s) matched); heard tool id(s) 'rig7'" "$work/survey.err" &&
+  pass "the survey names the tools it hears: $(grep -m1 "no attitude" "$work/survey.err")" || fail "survey: $(cat "$work/survey.err")"
 finish
