@@ -46,6 +46,15 @@ rc=0
 "$bin/plumb" compare --input "$work/turning/sensor.csv" -e compensated -e static --window 1 > "$work/cmp.out" 2> "$work/cmp.err" || rc=$?
 [ $rc -eq 1 ] && grep -q "^compensated" "$work/cmp.out" && grep -q "static made no valid estimate" "$work/cmp.err" &&
   pass "compare: the table, then the plugin that made no valid row: exit 1" || fail "compare, no valid row: exit $rc, $(cat "$work/cmp.out" "$work/cmp.err")"
+# What those invalid rows did not measure is an empty cell, not a number that looks measured.
+python3 - "$work/static.csv" <<'PY' && pass "invalid rows: empty cells for what was not measured" || fail "invalid rows carry numbers: $(head -3 "$work/static.csv")"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert rows and all(r["valid"] == "0" for r in rows), rows
+for k in ("inclination_deg", "azimuth_deg", "toolface_deg", "inclination_sd_deg", "dip_deg", "total_b"):
+    assert all(r[k] == "" for r in rows), (k, [r[k] for r in rows])
+assert all(float(r["rpm"]) > 50 for r in rows)  # the speed is measured all the same
+PY
 "$bin/plumb" estimate -e compensated --input "$work/turning/sensor.csv" --window 1 > /dev/null 2>&1 &&
   pass "estimate with valid rows exits 0" || fail "compensated on the turning platform failed"
 
