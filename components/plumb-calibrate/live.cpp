@@ -170,7 +170,7 @@ int run_live(const Options& o) {
   auto reader = transport::make_reader<topics::SensorBatch>(*connection.participant, transport::topic_names::kSensorRaw,
                                                             transport::Qos::sensor_stream());
   components::StatusReporter status(*connection.participant, "plumb-calibrate");
-  components::SilenceNotes silence("plumb-calibrate", transport::topic_names::kSensorRaw);
+  components::SilenceNotes silence("plumb-calibrate", transport::topic_names::kSensorRaw, connection.options.security.empty());
   std::uint64_t received = 0, unusable = 0;
   std::atomic<int> requested{0}, refused{0};
   const auto counters = [&](int recorded) {

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <iostream>
 
+#include "addresses.hpp"
 #include "dds_feed.hpp"
 #include "hub.hpp"
 #include "plumb/components/cli.hpp"
@@ -35,10 +36,17 @@ int run(const Options& o) {
   WebServer server(o.web, hub);
   components::install_stop_handler();
   components::StatusReporter status(*conn.participant, "plumb-display");
-  std::cout << "plumb-display: serving http://" << o.web.bind << ":" << server.port() << "/ (domain "
-            << conn.options.domain_id << ", " << conn.transport->name()
+  // Addresses a browser can open: --bind 0.0.0.0 is every interface, not an address.
+  const std::vector<std::string> addresses = page_addresses(o.web.bind, server.port());
+  std::cout << "plumb-display: serving " << addresses.front() << " (domain " << conn.options.domain_id << ", "
+            << conn.transport->name()
             << (o.web.bind == "127.0.0.1" ? "; this computer only: --bind 0.0.0.0 to serve the network" : "") << ")"
             << std::endl;
+  if (addresses.size() > 1) {
+    std::cout << "plumb-display: on every interface:";
+    for (std::size_t i = 1; i < addresses.size(); ++i) std::cout << (i == 1 ? " " : ", ") << addresses[i];
+    std::cout << std::endl;
+  }
   const auto t0 = std::chrono::steady_clock::now();
   while (!components::g_stop) {
     if (o.duration_s > 0 && std::chrono::steady_clock::now() - t0 >= std::chrono::duration<double>(o.duration_s)) break;

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <set>
 
 #include "plumb/components/convert.hpp"
 #include "plumb/components/status_reporter.hpp"
@@ -110,8 +111,26 @@ int run_live_survey(const LiveOptions& o) {
   topics::Attitude a;
   topics::MeasuredDepth d;
   bool attitude_matched = false, depth_matched = false;
+  // Until the first attitude of this tool: what the survey waits for, at 3 s, 6 s, 12 s..., with the
+  // tool ids it hears instead (a --tool-id that no one publishes would otherwise wait in silence).
+  bool heard_tool = false;
+  std::set<std::string> other_tool_ids;
+  double next_silence_note_s = 3;
+  const auto other_tool_message = [&](const std::string& id) {
+    ++other_tool;
+    other_tool_ids.insert(id);
+  };
   status.publish("running", counters());
   while (!components::g_stop && !enough()) {
+    if (const double waited_s = std::chrono::duration<double>(Clock::now() - t0).count();
+        !heard_tool && waited_s >= next_silence_note_s) {
+      next_silence_note_s *= 2;
+      std::string ids;
+      for (const auto& id : other_tool_ids) ids += (ids.empty() ? "'" : ", '") + id + "'";
+      note("no attitude for tool '" + o.tool_id + "' on " + attitude_topic + " for " + std::to_string(static_cast<int>(waited_s)) +
+           " s (" + std::to_string(attitude.matched_writers()) + " writer(s) matched); " +
+           (ids.empty() ? std::string("no other tool heard either") : "heard tool id(s) " + ids + " (choose with --tool-id)"));
+    }
     // Said once each: an operator (or a test) knows the inputs are connected before the run starts.
     if (!attitude_matched && attitude.matched_writers() > 0) {
       attitude_matched = true;
@@ -132,7 +151,7 @@ int run_live_survey(const LiveOptions& o) {
     while (depth.take(d)) {
       if ((d.flags & topics::DEPTH_VALID) == 0) continue;
       if (!d.tool_id.empty() && d.tool_id != o.tool_id) {
-        ++other_tool;
+        other_tool_message(d.tool_id);
         continue;
       }
       ++depth_messages;
@@ -140,9 +159,10 @@ int run_live_survey(const LiveOptions& o) {
     }
     while (attitude.take(a)) {
       if (!a.tool_id.empty() && a.tool_id != o.tool_id) {
-        ++other_tool;
+        other_tool_message(a.tool_id);
         continue;
       }
+      heard_tool = true;
       const Estimate e = components::from_topic(a);
       if (continuity.add(e.t_start, e.t_end) > 0) note(continuity.last_note());
       detector.add_attitude(e, a.tool_id);

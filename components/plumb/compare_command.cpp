@@ -183,7 +183,7 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("-i,--input", f->input,
                   "compare the plugins on this sensor CSV or MCAP recording instead of simulated runs (no truth: each "
                   "plugin's spread and sigma, and its agreement with the first plugin)");
-  cmd->add_option("-t,--topic", f->topic, "--input: sensor topic of a recording (default: plumb/sensor/calibrated, else plumb/sensor/raw)");
+  cmd->add_option("-t,--topic", f->topic, "--input: sensor topic of a recording (default: plumb/sensor/calibrated when it holds messages, else plumb/sensor/raw)");
   cmd->add_option("-w,--window", f->window_s, "--input: estimator window, s (0: the whole file)")->capture_default_str();
   cmd->add_option("--match", f->match_s, "--input: rows of two plugins are compared when their times are at most this far apart, s")
       ->capture_default_str();

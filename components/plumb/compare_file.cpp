@@ -80,7 +80,8 @@ int compare_file(const CompareFileOptions& o) {
   if (runner.slots().size() > 1)
     std::printf("RMS dI, dA: against %s; in 2s: share of rows within 2 sqrt(s1^2 + s2^2) of it (about 95 %% when both are right)\n",
                 reference.c_str());
-  return 0;
+  std::fflush(stdout);  // the table before the lines on stderr that say which plugin failed
+  return check_valid_estimates("plumb compare", runner);
 }
 
 }  // namespace plumb::cli

@@ -87,7 +87,8 @@ class FlatCsvWriter {
         out << '\n';
         header_done_ = true;
       }
-      for (std::size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << csv_escape(row[i].second);
+      // A number not measured (NaN) is an empty cell, as in every plumb CSV.
+      for (std::size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << (row[i].second == "nan" ? "" : csv_escape(row[i].second));
       out << '\n';
     }
   }

@@ -71,7 +71,7 @@ int run_estimate(const EstimateOptions& o) {
     for (const auto& [reason, n] : slot.estimator->counters()) std::cerr << ", " << n << " " << reason;
     std::cerr << '\n';
   }
-  return 0;
+  return check_valid_estimates("plumb estimate", runner);
 }
 
 }  // namespace
@@ -81,7 +81,7 @@ void add_estimate_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("estimate", "Run estimator plugins offline on a sensor CSV; write an attitude CSV");
   cmd->add_option("-e,--estimator,--plugin", o->estimators, "estimator plugin name (repeat to run several side by side; --plugin, as for plumb-estimator, is the same)")->required();
   cmd->add_option("-i,--input", o->input, "sensor CSV (docs/conventions.md format) or MCAP recording (plumb record)")->required();
-  cmd->add_option("-t,--topic", o->topic, "sensor topic of a recording (default: plumb/sensor/calibrated, else plumb/sensor/raw)");
+  cmd->add_option("-t,--topic", o->topic, "sensor topic of a recording (default: plumb/sensor/calibrated when it holds messages, else plumb/sensor/raw)");
   cmd->add_option("-o,--output", o->output, "attitude CSV to write (default: standard output)");
   cmd->add_option("-w,--window", o->window_s, "window length in seconds; 0 = the whole file (one row)")->capture_default_str();
   components::add_param_option(*cmd, o->params);

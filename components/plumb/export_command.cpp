@@ -51,26 +51,14 @@ template <class M> class TopicCsv {
 int run_export(const ExportOptions& o) {
   mcap::Reader reader(o.input);
   if (!reader.has_summary()) reader.scan();  // learns the channels of a cut file
-  std::string topic = o.topic;
+  // Default: the sensor topic, as plumb estimate --input takes it (calibrated when it holds
+  // messages, else raw); a topic without messages is an error that names the ones with.
+  const std::string topic = o.topic.empty() ? choose_sensor_topic("plumb export", reader, "") : o.topic;
   const mcap::Channel* channel = nullptr;
-  std::string names;
-  for (const auto& [id, c] : reader.channels()) {
-    names += (names.empty() ? "" : ", ") + c.topic;
+  for (const auto& [id, c] : reader.channels())
     if (c.topic == topic) channel = &c;
-  }
-  if (topic.empty()) {
-    // Default: the sensor topic, as plumb estimate --input takes it.
-    const auto& sensor = topics::type_support<topics::SensorBatch>();
-    for (const char* preferred : {topics::names::kSensorCalibrated, topics::names::kSensorRaw}) {
-      for (const auto& [id, c] : reader.channels()) {
-        const auto* type = channel_type(reader, c);
-        if (!channel && c.topic == preferred && type && *type == sensor) channel = &c;
-      }
-    }
-    if (!channel) throw std::invalid_argument(o.input + ": no sensor topic to export by default: choose one with --topic (" + names + ")");
-    topic = channel->topic;
-  }
-  if (!channel) throw std::invalid_argument(o.input + ": no topic '" + topic + "' in the recording (" + names + ")");
+  if (!channel) throw std::invalid_argument(o.input + ": no topic '" + topic + "' in the recording (it holds " + describe_topic_counts(reader) + ")");
+  require_messages(reader, topic);
   const auto* type = channel_type(reader, *channel);
   if (!type) throw std::runtime_error(o.input + ": topic '" + topic + "' is not a plumb CDR topic (schema unknown to this plumb)");
 
@@ -113,7 +101,7 @@ void add_export_command(CLI::App& app) {
   auto o = std::make_shared<ExportOptions>();
   auto* cmd = app.add_subcommand("export", "Write one topic of an MCAP recording as CSV (the formats of docs/conventions.md)");
   cmd->add_option("file", o->input, "the recording (.mcap)")->required();
-  cmd->add_option("-t,--topic", o->topic, "topic to export (default: plumb/sensor/calibrated, else plumb/sensor/raw)");
+  cmd->add_option("-t,--topic", o->topic, "topic to export (default: plumb/sensor/calibrated when it holds messages, else plumb/sensor/raw)");
   cmd->add_option("-o,--output", o->output, "CSV file to write (default: standard output)");
   cmd->callback([o] { g_exit_code = run_export(*o); });
 }

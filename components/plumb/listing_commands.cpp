@@ -23,11 +23,8 @@ void add_listing_commands(CLI::App& app) {
     }
     bool selected_found = false;
     for (const auto& t : found) selected_found = selected_found || t.name == selected;
-    if (!found.empty() && !selected_found) {
-      std::string names;
-      for (const auto& t : found) names += (names.empty() ? "" : ", ") + t.name;
-      throw transport::Error("unknown transport '" + selected + "' (found: " + names + ")");
-    }
+    if (!found.empty() && !selected_found)
+      throw plugin::UnknownName(plugin::unknown_name_message(transport::kTransportPlugins, selected, found));
     for (const auto& t : found) {
       std::string version;
       try {

@@ -98,11 +98,32 @@ int run_record(const RecordOptions& o) {
   std::cerr << "plumb record: recording " << (named.empty() ? "every plumb topic" : std::to_string(named.size()) + " topic(s)")
             << " to " << o.output << " (Ctrl-C to stop)" << std::endl;
 
+  // What the recorder waits for, and the note when nothing comes (at 3 s, 6 s, 12 s...).
+  std::string waiting_for = "any plumb topic";
+  if (!named.empty()) {
+    waiting_for.clear();
+    for (const auto& [topic, type] : named) waiting_for += (waiting_for.empty() ? "" : ", ") + topic;
+  }
+  const auto heard = [&] {
+    std::string with_writers;
+    for (const auto& t : conn.participant->discovered_topics())
+      if (t.writers > 0) with_writers += (with_writers.empty() ? "" : ", ") + t.name;
+    return with_writers.empty() ? "no topic has a writer on domain " + domain_text(options)
+                                : "topics with writers on domain " + domain_text(options) + ": " + with_writers;
+  };
+  double next_silence_note_s = 3;
+
   const auto t0 = Clock::now();
   auto last_flush = t0, last_discovery = t0;
   std::string failure;
   while (!g_stop) {
     const auto now = Clock::now();
+    if (const double silent_s = std::chrono::duration<double>(now - t0).count(); silent_s >= next_silence_note_s) {
+      next_silence_note_s *= 2;
+      if (recorder.messages() == 0)
+        std::cerr << "plumb record: nothing received for " << static_cast<int>(silent_s) << " s on " << waiting_for << "; "
+                  << heard() << std::endl;
+    }
     if (o.duration_s > 0 && std::chrono::duration<double>(now - t0).count() >= o.duration_s) break;
     try {
       recorder.drain();
@@ -143,6 +164,11 @@ int run_record(const RecordOptions& o) {
     std::cerr << "plumb record: " << writer.statistics().message_count << " message(s) kept in " << o.output << '\n';
     return 1;
   }
+  if (writer.statistics().message_count == 0) {
+    components::print_error("plumb record", "nothing recorded: no message on " + waiting_for + " in " + format_measured(elapsed) +
+                                                " s (" + heard() + "); " + o.output + " holds no message");
+    return 1;
+  }
   std::cerr << "plumb record: " << writer.statistics().message_count << " message(s) on " << topics_with_data
             << " topic(s) in " << format_measured(elapsed) << " s to " << o.output << " ("
             << format_measured(static_cast<double>(writer.bytes_written()) / 1e6) << " MB)" << std::endl;
@@ -153,7 +179,9 @@ int run_record(const RecordOptions& o) {
 // metadata and messages, in the same order.
 int run_repair(const RecordOptions& o) {
   mcap::Reader reader(o.repair);
+  // In place: written beside the file, then renamed over it once whole.
   const std::string out = o.output.empty() ? o.repair + ".repaired" : o.output;
+  std::string what;
   {
     mcap::Writer writer(out);
     std::map<std::uint16_t, std::uint16_t> schema_ids, channel_ids;
@@ -176,14 +204,15 @@ int run_repair(const RecordOptions& o) {
     });
     for (const auto& md : reader.metadata()) writer.write_metadata(md);
     writer.close();
-    std::cerr << "plumb record: repaired " << o.repair << " -> " << out << ": " << writer.statistics().message_count
-              << " message(s) in " << writer.statistics().chunk_count << " chunk(s)";
+    what = std::to_string(writer.statistics().message_count) + " message(s) in " +
+           std::to_string(writer.statistics().chunk_count) + " chunk(s)";
     if (reader.readable_bytes() < reader.file_size())
-      std::cerr << "; bytes " << reader.readable_bytes() << " to " << reader.file_size() << " were not readable";
-    std::cerr << '\n';
+      what += "; bytes " + std::to_string(reader.readable_bytes()) + " to " + std::to_string(reader.file_size()) + " were not readable";
   }
   warn_problems("plumb record", reader);
   if (o.output.empty()) std::filesystem::rename(out, o.repair);
+  std::cerr << "plumb record: repaired " << o.repair << (o.output.empty() ? " in place" : " -> " + o.output) << ": " << what
+            << '\n';
   return 0;
 }
 

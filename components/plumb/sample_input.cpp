@@ -26,6 +26,22 @@ std::function<void(bool, const std::string&)> require_gyros_for(const estimator:
   };
 }
 
+int check_valid_estimates(const std::string& program, const estimator::Runner& runner) {
+  int status = 0;
+  for (const auto& slot : runner.slots()) {
+    if (slot.estimates > slot.invalid) continue;
+    std::cerr << program << ": " << slot.name << " made no valid estimate (";
+    if (slot.estimates == 0) {
+      std::cerr << "no estimate at all: too few samples for one window?";
+    } else {
+      std::cerr << "0 of " << slot.estimates << "; last reason: " << (slot.last_reason.empty() ? "none given" : slot.last_reason);
+    }
+    std::cerr << ")" << std::endl;
+    status = 1;
+  }
+  return status;
+}
+
 SampleInputSummary read_samples(const SampleInput& input, const std::function<void(bool, const std::string&)>& on_start,
                                 const std::function<void(const std::vector<Sample>&)>& on_chunk) {
   SampleInputSummary summary;

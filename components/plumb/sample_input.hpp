@@ -41,4 +41,9 @@ SampleInputSummary read_samples(const SampleInput& input, const std::function<vo
 // them: "estimator 'strapdown' needs gyros, and run.csv has no wx, wy, wz columns".
 std::function<void(bool, const std::string&)> require_gyros_for(const estimator::Runner& runner, const std::string& path);
 
+// After a run: one stderr line for each plugin of `runner` that made no valid estimate at all,
+// "plumb estimate: compensated made no valid estimate (0 of 12; last reason: ...)"; returns 1 when
+// there was such a plugin (the run's exit status), else 0.
+int check_valid_estimates(const std::string& program, const estimator::Runner& runner);
+
 }  // namespace plumb::cli

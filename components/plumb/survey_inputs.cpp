@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -57,6 +58,14 @@ class Table {
     if (!has(name)) return std::nullopt;
     return number(name);
   }
+  // A value an estimate may not have measured: an empty cell (or a missing column) is NaN.
+  double measured(const std::string& name) const {
+    const std::string t = text(name);
+    if (t.empty()) return std::numeric_limits<double>::quiet_NaN();
+    const auto v = parse_number(t, true);
+    if (!v) throw std::runtime_error(where() + "column '" + name + "': bad number '" + t + "'");
+    return *v;
+  }
   std::string where() const { return path_ + ":" + std::to_string(line_no_) + ": "; }
 
  private:
@@ -75,15 +84,15 @@ std::vector<Estimate> read_attitude_csv(const std::string& path, double window_s
   while (t.next()) {
     Estimate e;
     e.t_end = t.number("t");
-    e.inclination_deg = t.number("inclination_deg");
-    e.azimuth_deg = t.number("azimuth_deg");
+    e.inclination_deg = t.measured("inclination_deg");
+    e.azimuth_deg = t.measured("azimuth_deg");
     e.valid = t.number("valid") != 0;
     e.azimuth_valid = t.has("azimuth_valid") ? t.number("azimuth_valid") != 0 : e.valid;
-    e.inclination_sd_deg = t.optional("inclination_sd_deg").value_or(0);
-    e.azimuth_sd_deg = t.optional("azimuth_sd_deg").value_or(0);
-    e.dip_deg = t.optional("dip_deg").value_or(0);
-    e.total_g = t.optional("total_g").value_or(0);
-    e.total_b = t.optional("total_b").value_or(0);
+    e.inclination_sd_deg = t.measured("inclination_sd_deg");
+    e.azimuth_sd_deg = t.measured("azimuth_sd_deg");
+    e.dip_deg = t.measured("dip_deg");
+    e.total_g = t.measured("total_g");
+    e.total_b = t.measured("total_b");
     e.rpm = t.optional("rpm").value_or(0);
     e.rotating = std::abs(e.rpm) >= 1;
     e.estimator = t.has("estimator") ? t.text("estimator") : "attitude-csv";

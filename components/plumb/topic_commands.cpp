@@ -58,7 +58,7 @@ int run_echo(const TopicOptions& o) {
     int received = 0;
     SensorCsvWriter sensor_csv;
     FlatCsvWriter flat_csv;
-    components::SilenceNotes silence("plumb topic echo", o.topic);
+    components::SilenceNotes silence("plumb topic echo", o.topic, conn.options.security.empty());
     std::vector<M> taken;  // reused by every batched take
     while (!g_stop && (o.count == 0 || received < o.count)) {
       if (o.timeout_s > 0 && seconds_since(t0) > o.timeout_s) break;
@@ -117,7 +117,7 @@ int run_hz(const TopicOptions& o) {
     std::size_t samples = 0, total = 0, total_samples = 0;
     double first_arrival = 0, last_arrival = 0;
     int reports = 0;
-    components::SilenceNotes silence("plumb topic hz", o.topic);
+    components::SilenceNotes silence("plumb topic hz", o.topic, conn.options.security.empty());
     std::vector<M> taken;  // reused by every batched take
     while (!g_stop && (o.count == 0 || reports < o.count)) {
       if (o.timeout_s > 0 && seconds_since(t0) > o.timeout_s) break;

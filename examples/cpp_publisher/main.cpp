@@ -7,6 +7,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <iostream>
+#include <stdexcept>
 #include <thread>
 
 #include "plumb/transport/loader.hpp"
@@ -83,6 +84,9 @@ int main(int argc, char** argv) {
       next += std::chrono::seconds(1);
       while (!stop_requested && std::chrono::steady_clock::now() < next) std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
+  } catch (const std::invalid_argument& e) {  // a usage error, such as an unknown --transport name
+    std::cerr << "plumb-example-publisher: " << e.what() << std::endl;
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "plumb-example-publisher: " << e.what() << std::endl;
     return 1;

@@ -7,6 +7,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <iostream>
+#include <stdexcept>
 
 #include "plumb/transport/loader.hpp"
 #include "plumb/transport/transport.hpp"
@@ -88,6 +89,9 @@ int main(int argc, char** argv) {
                   << " deg, window end " << attitude.window_end_ns << " ns" << std::endl;
       }
     }
+  } catch (const std::invalid_argument& e) {  // a usage error, such as an unknown --transport name
+    std::cerr << "plumb-example-subscriber: " << e.what() << std::endl;
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "plumb-example-subscriber: " << e.what() << std::endl;
     return 1;

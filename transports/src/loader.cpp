@@ -28,7 +28,6 @@ std::shared_ptr<Transport> load_transport(const std::string& requested) {
     if (transport == nullptr) throw plugin::Error(found.path, "failed to start");
     return std::shared_ptr<Transport>(transport);
   } catch (const plugin::Error& e) {
-    if (e.file.empty()) throw Error(e.what());  // unknown name: the message lists what exists
     if (const auto missing = missing_vendor_library(e.reason)) {
       throw Error("transport '" + name + "' needs " + missing->library + ", which is missing or unreadable: install the " +
                   "Debian package " + missing->package + " (apt-get install " + missing->package + ")");

@@ -16,9 +16,12 @@
 #include <climits>
 #include <cstdlib>
 #include <ctime>
+#include <filesystem>
 #include <memory>
 #include <set>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "plumb/transport/transport.hpp"
 
@@ -214,6 +217,23 @@ SecurityFiles check_security_files(const std::string& dir_in) {
   struct stat st {};
   if (::stat(dir_in.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) {
     refuse(dir_in, "is not a folder (expected an identity folder made by `plumb security create-identity`)");
+  }
+  // A keystore root (plumb security create-keystore) is the most likely wrong folder: name the
+  // identity folders it holds.
+  if (::stat((dir_in + "/enclaves").c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+    std::vector<std::string> names;
+    std::error_code ec;
+    const std::filesystem::path enclaves = std::filesystem::path(dir_in) / "enclaves";
+    for (auto it = std::filesystem::recursive_directory_iterator(enclaves, ec); !ec && it != std::filesystem::recursive_directory_iterator();
+         it.increment(ec)) {
+      if (it->is_directory(ec) && std::filesystem::exists(it->path() / "cert.pem", ec))
+        names.push_back(it->path().lexically_relative(enclaves).string());
+    }
+    std::sort(names.begin(), names.end());
+    std::string found;
+    for (const auto& n : names) found += (found.empty() ? "" : ", ") + n;
+    refuse(dir_in, "this is a keystore root: give --security " + dir_in + "/enclaves/NAME (found: " +
+                       (found.empty() ? "no identity yet: plumb security create-identity " + dir_in + " NAME" : found) + ")");
   }
   const std::string dir = absolute(dir_in);
   SecurityFiles f{dir + "/identity_ca.cert.pem", dir + "/cert.pem",      dir + "/key.pem",

@@ -54,7 +54,8 @@ std::string did_you_mean(const std::vector<std::string>& names) {
   return text + "?";
 }
 
-SilenceNotes::SilenceNotes(std::string program, std::string topic) : program_(std::move(program)), topic_(std::move(topic)) {}
+SilenceNotes::SilenceNotes(std::string program, std::string topic, bool unsecured)
+    : program_(std::move(program)), topic_(std::move(topic)), unsecured_(unsecured) {}
 
 void SilenceNotes::received() {
   since_ = Clock::now();
@@ -68,13 +69,19 @@ void SilenceNotes::check(transport::Participant& participant, std::size_t matche
   std::string line = program_ + ": nothing on " + topic_ + " for " + std::to_string(static_cast<int>(silent_s)) +
                      " s (" + std::to_string(matched_writers) + " writer(s) matched); ";
   std::string with_writers;
-  for (const auto& t : participant.discovered_topics())
+  std::size_t topic_writers = 0;  // writers seen on the topic itself, matched or not
+  for (const auto& t : participant.discovered_topics()) {
     if (t.writers > 0 && t.name != topic_) with_writers += (with_writers.empty() ? "" : ", ") + t.name;
+    if (t.name == topic_) topic_writers += t.writers;
+  }
   line += with_writers.empty() ? "no topic has a writer on this domain" : "topics with writers: " + with_writers;
   if (matched_writers == 0) {
     const std::string hint = did_you_mean(closest_topic_names(participant, topic_));
     if (!hint.empty()) line += "; " + hint;
   }
+  if (unsecured_ && matched_writers == 0 && (with_writers.empty() || topic_writers > 0))
+    line += "; if the system is secured, its participants ignore an unsecured one: give --security DIR (an identity "
+            "folder, docs/security.md)";
   std::cerr << line << std::endl;
 }
 

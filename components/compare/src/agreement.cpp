@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace plumb::compare {
@@ -11,8 +12,11 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 
 double wrap_180(double deg) { return deg - 360.0 * std::floor((deg + 180.0) / 360.0); }
 
+// Of the sigmas reported: an unknown one (NaN) is left out, and none known is NaN.
 double median(std::vector<double> v) {
   if (v.empty()) return 0;
+  std::erase_if(v, [](double x) { return std::isnan(x); });
+  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
   const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
   std::nth_element(v.begin(), mid, v.end());
   return *mid;

@@ -61,7 +61,7 @@ struct Accumulator {
       const double da = wrap_deg_180(e.azimuth_deg - az_true);
       sum_az += da, sum_az2 += da * da, ++valid;
       max_az = std::max(max_az, std::abs(da));
-      sum_sd2 += e.azimuth_sd_deg * e.azimuth_sd_deg;
+      if (std::isfinite(e.azimuth_sd_deg)) sum_sd2 += e.azimuth_sd_deg * e.azimuth_sd_deg;  // NaN: not estimated
       if (e.azimuth_sd_deg > 0) az_z2 += (da / e.azimuth_sd_deg) * (da / e.azimuth_sd_deg), ++az_z;
     }
   }

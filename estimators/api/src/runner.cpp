@@ -1,11 +1,34 @@
 #include "plumb/estimator/runner.hpp"
 
+#include <limits>
+
 #include "plumb/estimator/assignments.hpp"
 
 namespace plumb::estimator {
+namespace {
+
+// What an estimate did not measure is NaN on every topic and in every file, never a number that
+// looks measured (an inclination of 4e-16, a sigma of 0, a dip of 90 from a window that could not
+// be used). The plugins fill invalid estimates with whatever their formulas gave and report an
+// unknown sigma as 0; every host receives estimates through here.
+void mark_unmeasured(Estimate& e) {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  if (!e.valid) {
+    e.inclination_deg = e.azimuth_deg = e.gravity_toolface_deg = e.magnetic_toolface_deg = nan;
+    e.inclination_sd_deg = e.azimuth_sd_deg = e.toolface_sd_deg = nan;
+    e.dip_deg = e.total_g = e.total_b = nan;
+    return;
+  }
+  if (!e.azimuth_valid) e.azimuth_deg = e.azimuth_sd_deg = nan;
+  if (!e.toolface_valid) e.gravity_toolface_deg = e.toolface_sd_deg = nan;
+  for (double* sd : {&e.inclination_sd_deg, &e.azimuth_sd_deg, &e.toolface_sd_deg})
+    if (*sd == 0) *sd = nan;  // the plugins' "0 when not estimated"
+}
+
+}  // namespace
 
 void Runner::add(std::string name, EstimatorPtr estimator) {
-  slots_.push_back({std::move(name), std::move(estimator), {}, 0, 0});
+  slots_.push_back({std::move(name), std::move(estimator), {}, 0, 0, {}});
 }
 
 std::vector<Info> Runner::infos() const {
@@ -32,8 +55,12 @@ void Runner::reset() {
 void Runner::deliver(Slot& slot, std::vector<Estimate>& made, const Sink& sink) {
   for (auto& e : made) {
     e.estimator = slot.name;
+    mark_unmeasured(e);
     ++slot.estimates;
-    if (!e.valid) ++slot.invalid;
+    if (!e.valid) {
+      ++slot.invalid;
+      slot.last_reason = e.reason;
+    }
     if (sink) sink(slot, e);
   }
   made.clear();

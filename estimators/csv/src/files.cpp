@@ -91,6 +91,12 @@ void write_number(std::ostream& out, double v) {
   }
 }
 
+// A value of an estimate: NaN, what the estimate did not measure, is an empty cell. (A sample's
+// NaN is a broken reading, flagged NOT_FINITE, and stays "nan".)
+void write_estimated(std::ostream& out, double v) {
+  if (!std::isnan(v)) write_number(out, v);
+}
+
 }  // namespace
 
 Error::Error(const std::string& src, std::size_t ln, const std::string& col, const std::string& what)
@@ -285,20 +291,20 @@ void write_attitude_row(std::ostream& out, const Estimate& e, bool with_navigati
   const NavigationState none;
   const NavigationState& nav = e.navigation ? *e.navigation : none;
   out << std::setprecision(12) << e.t_end << std::setprecision(10);
-  for (double v : {e.inclination_deg, e.azimuth_deg, e.gravity_toolface_deg, e.rpm}) out << ',', write_number(out, v);
+  for (double v : {e.inclination_deg, e.azimuth_deg, e.gravity_toolface_deg, e.rpm}) out << ',', write_estimated(out, v);
   out << ',' << (e.valid ? 1 : 0);
   if (with_navigation) {
-    for (double v : nav.position_m) out << ',', write_number(out, v);
-    for (double v : nav.velocity_mps) out << ',', write_number(out, v);
+    for (double v : nav.position_m) out << ',', write_estimated(out, v);
+    for (double v : nav.velocity_mps) out << ',', write_estimated(out, v);
   }
   for (double v : {e.magnetic_toolface_deg, e.inclination_sd_deg, e.azimuth_sd_deg, e.toolface_sd_deg, e.dip_deg,
                    e.total_g, e.total_b})
-    out << ',', write_number(out, v);
+    out << ',', write_estimated(out, v);
   out << ',' << e.samples_used << ',' << (e.azimuth_valid ? 1 : 0) << ',' << (e.toolface_valid ? 1 : 0) << ','
       << sanitize(e.estimator) << ',' << sanitize(e.reason);
   if (with_navigation) {
-    for (double v : nav.position_sd_m) out << ',', write_number(out, v);
-    for (double v : nav.velocity_sd_mps) out << ',', write_number(out, v);
+    for (double v : nav.position_sd_m) out << ',', write_estimated(out, v);
+    for (double v : nav.velocity_sd_mps) out << ',', write_estimated(out, v);
     out << ',' << (nav.still ? 1 : 0) << ',' << nav.zero_velocity_updates << ',' << sanitize(nav.azimuth_reference);
   }
   out << '\n';

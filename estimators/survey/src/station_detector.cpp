@@ -183,10 +183,13 @@ void StationDetector::take(const Pending& p, double md, double md_sd) {
   s.md_m = md;
   s.md_sd_m = md_sd;
   s.inclination_deg = e.inclination_deg;
-  s.inclination_sd_deg = e.inclination_sd_deg;
-  s.magnetic_azimuth_deg = e.azimuth_deg;
-  s.azimuth_sd_deg = e.azimuth_sd_deg;
-  s.azimuth_valid = e.azimuth_valid;
+  // Not measured (NaN): a sigma of 0, the survey's "unknown"; near vertical, where the azimuth is
+  // not measured, the previous station's azimuth (the position hardly depends on it there).
+  s.inclination_sd_deg = std::isfinite(e.inclination_sd_deg) ? e.inclination_sd_deg : 0;
+  s.magnetic_azimuth_deg = std::isfinite(e.azimuth_deg) ? e.azimuth_deg : last_azimuth_;
+  s.azimuth_sd_deg = std::isfinite(e.azimuth_sd_deg) ? e.azimuth_sd_deg : 0;
+  s.azimuth_valid = e.azimuth_valid && std::isfinite(e.azimuth_deg);
+  last_azimuth_ = s.magnetic_azimuth_deg;
   if (e.total_g > 0) s.total_g_mps2 = e.total_g;
   if (e.total_b > 0) {
     s.total_b_uT = e.total_b;

@@ -140,7 +140,7 @@ timeout 60 "$bin/plumb" topic echo plumb/sensor/raw --csv --count 30 > "$work/ca
   pass "sensor capture" || fail "sensor capture: $(cat "$work/capture_err.txt")"
 head -1 "$work/capture.csv" | grep -qE "(^|,)t,fx,fy,fz,bx,by,bz(,|$)" && pass "capture header: $(head -1 "$work/capture.csv")" ||
   fail "capture header: $(head -1 "$work/capture.csv")"
-"$bin/plumb" estimate --estimator static --input "$work/capture.csv" --window 0 > "$work/capture_att.csv" 2>&1 &&
+"$bin/plumb" estimate --estimator compensated --input "$work/capture.csv" --window 0 > "$work/capture_att.csv" 2>&1 &&
   pass "plumb estimate reads the capture" || fail "plumb estimate on the capture: $(tail -2 "$work/capture_att.csv")"
 timeout 60 "$bin/plumb-bridge" --replay "$work/capture.csv" --rate max --strict > "$work/replay.txt" 2>&1 &&
   pass "plumb-bridge --replay --strict reads the capture" || fail "bridge replay of the capture: $(tail -2 "$work/replay.txt")"

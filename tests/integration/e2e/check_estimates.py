@@ -14,6 +14,11 @@ def angle_diff(a, b):
     return (a - b + 180.0) % 360.0 - 180.0
 
 
+def number(text):
+    """A CSV cell: empty is a value not measured (NaN)."""
+    return float(text) if text else float("nan")
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("file")
@@ -42,12 +47,12 @@ def main():
             else:
                 print(f"{name}: invalid as expected: {r['reason']}")
             continue
-        di = float(r["inclination_deg"]) - a.inclination
-        da = angle_diff(float(r["azimuth_deg"]), a.azimuth) - a.azi_offset
+        di = number(r["inclination_deg"]) - a.inclination
+        da = angle_diff(number(r["azimuth_deg"]), a.azimuth) - a.azi_offset
         ok = valid and abs(di) <= a.inc_tol and abs(da) <= a.azi_tol and all(
-            math.isfinite(float(r[k])) for k in ("inclination_deg", "azimuth_deg", "rpm"))
-        print(f"{name}: inc {float(r['inclination_deg']):.4f} (err {di:+.4f}, tol {a.inc_tol}) "
-              f"azi {float(r['azimuth_deg']):.3f} (err {da + a.azi_offset:+.3f}, expected {a.azi_offset:+.3f} +- {a.azi_tol}) rpm {float(r['rpm']):.1f} "
+            math.isfinite(number(r[k])) for k in ("inclination_deg", "azimuth_deg", "rpm"))
+        print(f"{name}: inc {number(r['inclination_deg']):.4f} (err {di:+.4f}, tol {a.inc_tol}) "
+              f"azi {number(r['azimuth_deg']):.3f} (err {da + a.azi_offset:+.3f}, expected {a.azi_offset:+.3f} +- {a.azi_tol}) rpm {number(r['rpm']):.1f} "
               f"{'ok' if ok else 'FAIL'}")
         bad += not ok
     return 1 if bad else 0

@@ -50,7 +50,7 @@ grep -qE 'warning: .*cut.mcap: byte [0-9]+: file truncated' "$work/cut.err" &&
   fail "cut: $(cat "$work/cut.txt" "$work/cut.err")"
 "$bin/plumb" export "$work/cut.mcap" -o "$work/cut.csv" 2> "$work/cut_export.err" && [ "$(grep -c . "$work/cut.csv")" -gt 10 ] &&
   pass "cut file exported: $(grep -c . "$work/cut.csv") lines" || fail "cut export: $(cat "$work/cut_export.err")"
-"$bin/plumb" estimate -e static --input "$work/cut.mcap" > "$work/cut_est.csv" 2> /dev/null && [ "$(grep -c . "$work/cut_est.csv")" -eq 2 ] &&
+"$bin/plumb" estimate -e compensated --input "$work/cut.mcap" > "$work/cut_est.csv" 2> /dev/null && [ "$(grep -c . "$work/cut_est.csv")" -eq 2 ] &&
   pass "cut file estimated" || fail "cut estimate: $(cat "$work/cut_est.csv")"
 
 # A flipped byte in a chunk: that chunk is skipped, by name and byte; the others are read.

@@ -79,5 +79,15 @@ expect_error "--security on a missing folder" "security: .*/nowhere: is not a fo
   timeout 20 "$bin/plumb-sim" --security "$work/nowhere" --duration 1
 PLUMB_SECURITY=$ks/enclaves/no-key expect_error "\$PLUMB_SECURITY is checked as --security is" "no-key/key.pem: private key is missing" \
   timeout 20 "$bin/plumb" topic echo plumb/status --timeout 3
+# The keystore root given instead of an identity folder: said so, with the identities it holds.
+refused "keystore root instead of an identity" "security: .*/ks: this is a keystore root: give --security .*/ks/enclaves/NAME \(found: .*good" "$ks"
+
+# An unsecured listener beside a secured publisher sees nothing (discovery is encrypted): it says
+# that the system may be secured and that --security is missing.
+timeout 30 "$bin/plumb-sim" --security "$good" --duration 10 --rate-hz 100 --wait-subscribers 0 > "$work/secured_sim.log" 2>&1 &
+pids+=($!)
+timeout 20 "$bin/plumb" topic echo plumb/sensor/raw --timeout 4 > /dev/null 2> "$work/unsecured.err"
+grep -q "nothing on plumb/sensor/raw for 3 s .*secured.*give --security DIR" "$work/unsecured.err" &&
+  pass "an unsecured listener beside a secured system hints at --security" || fail "no --security hint: $(cat "$work/unsecured.err")"
 expect_error "domain range above 230" "--domains: .*230" "$bin/plumb" security create-keystore "$work/ks2" --domains 0-232
 finish

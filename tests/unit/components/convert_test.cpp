@@ -58,5 +58,16 @@ TEST(Convert, AttitudeRoundTripKeepsEveryField) {
   }
 }
 
+TEST(Convert, AnInvalidReasonTravelsWhole) {
+  // The longest reasons the plugins give are over 63 characters; the display shows them whole.
+  Estimate e;
+  e.estimator = "compensated";
+  e.reason = "radial magnetic field too weak against its noise to track the platform angle";
+  EXPECT_EQ(from_topic(to_topic(e, "tool")).reason, e.reason);
+  e.navigation = NavigationState{};
+  e.reason = "aligning: waiting for the first still period of at least 2 s with the gyros quiet";
+  EXPECT_EQ(to_navigation(e, "tool").reason, e.reason);
+}
+
 }  // namespace
 }  // namespace plumb::components

@@ -132,5 +132,29 @@ TEST(AttitudeCsv, HeaderStartsWithTheRequiredColumnsAndReasonsCannotBreakRows) {
   EXPECT_EQ(split_line(row.substr(0, row.size() - 1)).size(), split_line(text.substr(0, text.find('\n'))).size());
 }
 
+TEST(AttitudeCsv, WhatWasNotMeasuredIsAnEmptyCell) {
+  std::ostringstream out;
+  write_attitude_header(out);
+  Estimate e;
+  e.t_end = 2;
+  e.inclination_deg = e.azimuth_deg = e.gravity_toolface_deg = e.dip_deg = std::nan("");
+  e.rpm = 60;
+  write_attitude_row(out, e);
+  const std::string text = out.str();
+  const auto header = split_line(text.substr(0, text.find('\n')));
+  const std::string row = text.substr(text.find('\n') + 1);
+  const auto cells = split_line(row.substr(0, row.size() - 1));
+  ASSERT_EQ(cells.size(), header.size());
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    if (header[i] == "inclination_deg" || header[i] == "azimuth_deg" || header[i] == "toolface_deg" || header[i] == "dip_deg") {
+      EXPECT_EQ(cells[i], "") << header[i];
+    }
+    if (header[i] == "rpm") {
+      EXPECT_EQ(cells[i], "60");
+    }
+  }
+  EXPECT_EQ(text.find("nan"), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace plumb::csv

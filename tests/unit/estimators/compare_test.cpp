@@ -91,7 +91,7 @@ TEST(CompareLibrary, CoverageColumnNearOneForHonestSigmasFarFromVertical) {
 TEST(CompareLibrary, UnknownPluginAndBadParameterAreErrors) {
   CompareConfig c = small();
   c.plugins = {"compensated", "nonexistent"};
-  EXPECT_THROW(run_compare(c), std::runtime_error);
+  EXPECT_THROW(run_compare(c), std::invalid_argument);  // a usage error: exit status 2
   c = small();
   c.assignments = {"static.max_turn=-3"};
   EXPECT_THROW(run_compare(c), estimator::ParameterError);

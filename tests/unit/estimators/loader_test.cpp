@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <stdexcept>
 
 #include "estimator_test_support.hpp"
 
@@ -44,10 +45,21 @@ TEST(EstimatorLoader, UnknownPluginErrorListsWhatExists) {
   try {
     load_estimator("no_such_estimator");
     FAIL() << "expected an error";
-  } catch (const std::runtime_error& error) {
+  } catch (const std::invalid_argument& error) {  // a usage error: exit status 2 in every program
     const std::string what = error.what();
     EXPECT_NE(what.find("no_such_estimator"), std::string::npos);
     for (const char* name : test::kAllPlugins) EXPECT_NE(what.find(name), std::string::npos) << what;
+  }
+}
+
+TEST(EstimatorLoader, AMisspelledNameNamesTheCloseMatches) {
+  try {
+    load_estimator("compensate");
+    FAIL() << "expected an error";
+  } catch (const std::invalid_argument& error) {
+    const std::string what = error.what();
+    EXPECT_NE(what.find("unknown estimator 'compensate': did you mean compensated?"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
   }
 }
 

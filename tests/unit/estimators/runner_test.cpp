@@ -5,6 +5,7 @@
 #include "plumb/estimator/runner.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace plumb::estimator {
@@ -97,6 +98,63 @@ TEST(Runner, ResetStartsEachEstimatorOverWithItsParameters) {
   EXPECT_EQ(n, 0);  // without the reset the 4th sample would have completed a window
   runner.push(samples(1, 1.0), sink);
   EXPECT_EQ(n, 1);
+}
+
+// Gives one estimate per push, as a plugin fills it: numbers everywhere, an unknown sigma as 0.
+class Filled final : public Estimator {
+ public:
+  explicit Filled(Estimate e) : e_(std::move(e)) {}
+  Info info() const override { return Info{}; }
+  void configure(const Parameters&) override {}
+  void push(std::span<const Sample>, std::vector<Estimate>& out) override { out.push_back(e_); }
+  void flush(std::vector<Estimate>&) override {}
+  Counters counters() const override { return {}; }
+
+ private:
+  Estimate e_;
+};
+
+Estimate delivered(const Estimate& made) {
+  Runner runner;
+  runner.add("p", EstimatorPtr(new Filled(made), [](Estimator* e) { delete e; }));
+  std::vector<Estimate> out;
+  runner.push(samples(1, 1), [&](const Runner::Slot&, Estimate& e) { out.push_back(e); });
+  return out.at(0);
+}
+
+Estimate filled(bool valid, bool azimuth_valid, bool toolface_valid) {
+  Estimate e;
+  e.valid = valid, e.azimuth_valid = azimuth_valid, e.toolface_valid = toolface_valid;
+  e.inclination_deg = 4e-16, e.azimuth_deg = 12, e.gravity_toolface_deg = 30, e.magnetic_toolface_deg = 40;
+  e.inclination_sd_deg = 0.01, e.azimuth_sd_deg = 0, e.toolface_sd_deg = 0.5;  // 0: not estimated
+  e.dip_deg = 90, e.total_g = 9.8, e.total_b = 48, e.rpm = 60;
+  e.reason = valid ? "" : "platform rotating";
+  return e;
+}
+
+TEST(Runner, WhatAnInvalidEstimateDidNotMeasureIsNaN) {
+  const Estimate e = delivered(filled(false, false, false));
+  for (double v : {e.inclination_deg, e.azimuth_deg, e.gravity_toolface_deg, e.magnetic_toolface_deg, e.inclination_sd_deg,
+                   e.azimuth_sd_deg, e.toolface_sd_deg, e.dip_deg, e.total_g, e.total_b})
+    EXPECT_TRUE(std::isnan(v)) << v;
+  EXPECT_EQ(e.rpm, 60);  // the platform's speed is measured however the attitude fails
+  EXPECT_EQ(e.reason, "platform rotating");
+}
+
+TEST(Runner, AnAngleMarkedInvalidAndAnUnknownSigmaAreNaN) {
+  const Estimate e = delivered(filled(true, false, true));
+  EXPECT_EQ(e.inclination_deg, 4e-16);
+  EXPECT_EQ(e.inclination_sd_deg, 0.01);
+  EXPECT_TRUE(std::isnan(e.azimuth_deg));
+  EXPECT_TRUE(std::isnan(e.azimuth_sd_deg));
+  EXPECT_EQ(e.gravity_toolface_deg, 30);
+  EXPECT_EQ(e.toolface_sd_deg, 0.5);
+  const Estimate f = delivered(filled(true, true, false));
+  EXPECT_EQ(f.azimuth_deg, 12);
+  EXPECT_TRUE(std::isnan(f.azimuth_sd_deg));  // reported as 0: not estimated
+  EXPECT_TRUE(std::isnan(f.gravity_toolface_deg));
+  EXPECT_TRUE(std::isnan(f.toolface_sd_deg));
+  EXPECT_EQ(f.magnetic_toolface_deg, 40);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <stdexcept>
 
 #include <unistd.h>
 
@@ -35,7 +36,7 @@ class ScopedEnv {
 std::string error_of(const std::string& name) {
   try {
     load_transport(name);
-  } catch (const Error& e) {
+  } catch (const std::exception& e) {
     return e.what();
   }
   return "";
@@ -57,6 +58,25 @@ TEST(Loader, UnknownNameIsAOneLineErrorListingTheTransportsFound) {
   EXPECT_NE(message.find("unknown transport 'foo'"), std::string::npos) << message;
   for (const std::string name : {PLUMB_BUILT_TRANSPORTS}) EXPECT_NE(message.find(name), std::string::npos) << message;
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+TEST(Loader, AMisspelledNameIsAUsageErrorNamingTheCloseMatches) {
+  const ScopedEnv path("PLUMB_TRANSPORT_PATH", nullptr);
+  for (const std::string name : {PLUMB_BUILT_TRANSPORTS}) {
+    const std::string typo = name.substr(0, name.size() - 1);  // "fastdd"
+    try {
+      load_transport(typo);
+      FAIL() << typo << " loaded";
+    } catch (const std::invalid_argument& e) {  // every plumb program: exit status 2
+      const std::string message = e.what();
+      EXPECT_NE(message.find("did you mean " + name + "?"), std::string::npos) << message;
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+  }
+  // Nothing close: no guess, but still the list of what exists.
+  const std::string message = error_of("zzzzzzzzzz");
+  EXPECT_EQ(message.find("did you mean"), std::string::npos) << message;
+  EXPECT_NE(message.find("found: "), std::string::npos) << message;
 }
 
 TEST(Loader, PathLikeNamesAreUnknownNotOpened) {

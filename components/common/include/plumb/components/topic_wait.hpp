@@ -21,10 +21,13 @@ std::vector<std::string> closest_topic_names(transport::Participant& participant
 std::string did_you_mean(const std::vector<std::string>& names);
 
 // Notes on stderr after 3, 6, 12, 24... s without a message on the topic (growing, so a long wait is
-// said, not shouted): matched writers, the topics that do have writers, and close names.
+// said, not shouted): matched writers, the topics that do have writers, and close names. An
+// unsecured program (`unsecured`) that sees no writer at all adds that a secured system needs
+// --security: secured participants do not show their topics to an unsecured one, and the vendors
+// do not tell a participant that another refused it.
 class SilenceNotes {
  public:
-  SilenceNotes(std::string program, std::string topic);
+  SilenceNotes(std::string program, std::string topic, bool unsecured = false);
   void received();  // a message came: the next note waits for a new silence
   void check(transport::Participant& participant, std::size_t matched_writers);
 
@@ -32,6 +35,7 @@ class SilenceNotes {
   using Clock = std::chrono::steady_clock;
   std::string program_;
   std::string topic_;
+  bool unsecured_ = false;
   Clock::time_point since_ = Clock::now();
   double next_note_s_ = 3;
 };

@@ -29,6 +29,7 @@ class Runner {
     Parameters parameters;
     std::uint64_t estimates = 0;
     std::uint64_t invalid = 0;
+    std::string last_reason;  // of the last invalid estimate: why a plugin that made none valid failed
   };
   // Called for every estimate, in the order the estimators made them.
   using Sink = std::function<void(const Slot& slot, Estimate& estimate)>;

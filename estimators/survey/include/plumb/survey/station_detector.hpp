@@ -93,6 +93,7 @@ class StationDetector {
   DetectorCounters counters_;
   std::optional<double> last_md_;
   double last_t_ = -1e300;
+  double last_azimuth_ = 0;  // of the last station: for one whose azimuth was not measured
   bool in_stop_ = false;            // tally mode: inside a run of still windows
   std::size_t stops_ = 0;           // tally mode: stops seen
 };

@@ -28,6 +28,13 @@ struct Error : std::runtime_error {
   std::string reason;
 };
 
+// A name that matches no plugin: a usage error (the command line must change), hence
+// std::invalid_argument, which every plumb program reports with exit status 2. One line naming the
+// close matches and the plugins found.
+struct UnknownName : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
 // One family of plugins.
 struct Kind {
   const char* label;         // "transport": used in messages
@@ -51,7 +58,14 @@ std::vector<Found> find(const Kind& kind);
 // "found: a, b" or "found: none, searched X:Y (set PLUMB_..._PATH to add folders)".
 std::string describe(const Kind& kind, const std::vector<Found>& found);
 
-// The plugin named `name`: throws Error naming the plugins found when there is none.
+// The names of `found` a few edits away from `name` (a typo), closest first, at most three.
+std::vector<std::string> close_names(const std::string& name, const std::vector<Found>& found);
+
+// "unknown transport 'fastds': did you mean fastdds? (found: cyclonedds, fastdds)"
+std::string unknown_name_message(const Kind& kind, const std::string& name, const std::vector<Found>& found);
+
+// The plugin named `name`: throws UnknownName naming the close matches and the plugins found when
+// there is none.
 Found locate(const Kind& kind, const std::string& name);
 
 // Opens the library and returns what its entry point returns, once the ABI string matched.

@@ -1,0 +1,15 @@
+// The addresses a person can open for the page, whatever --bind says: 0.0.0.0 is where the server
+// listens (every interface), not an address a browser can reach.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace plumb::display_component {
+
+// For a server bound to every interface (0.0.0.0, ::, or empty): http://127.0.0.1:PORT/ first,
+// then http://<host name>:PORT/ and http://<address>:PORT/ for each IPv4 interface that is up
+// (loopback left out). For any other address: that address alone.
+std::vector<std::string> page_addresses(const std::string& bind, int port);
+
+}  // namespace plumb::display_component

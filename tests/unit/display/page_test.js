@@ -1,0 +1,46 @@
+// The display page's own arithmetic and words, under node (no browser): the part of index.html
+// between "PURE BEGIN" and "PURE END", and a few facts of the page itself.
+// usage: node page_test.js index.html
+"use strict";
+const fs = require("fs");
+const assert = require("assert");
+
+const page = fs.readFileSync(process.argv[2], "utf8");
+const begin = page.indexOf("// PURE BEGIN"), end = page.indexOf("// PURE END");
+assert(begin > 0 && end > begin, "the page marks its pure part");
+const {angleText, wrapsAround, LENGTH_UNITS, cardTitle, counterText} = new Function(
+  page.slice(begin, end) + "\nreturn {angleText, wrapsAround, LENGTH_UNITS, cardTitle, counterText};")();
+
+let checks = 0;
+const check = (ok, what) => { assert(ok, what); ++checks; };
+
+// Angles shown in [0, 360) after rounding: one card never says 360.00 while another says 0.00.
+check(angleText(359.996) === "0.00", "359.996 shows as 0.00, not 360.00: " + angleText(359.996));
+check(angleText(360) === "0.00", "360 shows as 0.00");
+check(angleText(-0.001) === "0.00", "-0.001 shows as 0.00: " + angleText(-0.001));
+check(angleText(359.994) === "359.99", "359.994 shows as 359.99");
+check(angleText(-90) === "270.00", "-90 shows as 270.00");
+check(angleText(45.5) === "45.50", "45.5 shows as 45.50");
+check(angleText(NaN) === "-" && angleText(null) === "-", "no number: -");
+
+// The history breaks its line where the angle wraps, not elsewhere.
+check(wrapsAround(359, 1) && wrapsAround(2, 358), "359 -> 1 and 2 -> 358 wrap");
+check(!wrapsAround(10, 20) && !wrapsAround(170, 190), "10 -> 20 and 170 -> 190 do not");
+
+// Metres or feet; dogleg per 30 m or per 100 ft.
+check(Math.abs(100 * LENGTH_UNITS.ft.perLength - 328.084) < 1e-3, "100 m is 328.084 ft");
+check(LENGTH_UNITS.m.perLength === 1 && LENGTH_UNITS.m.perDls === 1, "metres are the survey's own unit");
+check(Math.abs(3 * LENGTH_UNITS.ft.perDls - 3.048) < 1e-9, "3 deg/30 m is 3.048 deg/100 ft");
+
+// Words for people.
+check(cardTitle("sim", "compensated") === "tool sim, compensated estimator", "card name: " + cardTitle("sim", "compensated"));
+check(cardTitle("", "static") === "unnamed tool, static estimator", "card without tool id");
+check(counterText("lost_samples", 3) === "samples lost 3", counterText("lost_samples", 3));
+check(counterText("compensated.gaps", 1) === "compensated: gaps 1", counterText("compensated.gaps", 1));
+check(counterText("some_new_counter", 2) === "some new counter 2", "an unlisted counter loses its underscores");
+
+// The page: the reason wraps whole, the unit choice is kept, no developers' dot in names.
+check(/\.why \{[^}]*white-space:normal/.test(page), "the invalid reason wraps");
+check(page.includes('localStorage.setItem("plumb.units"'), "the unit choice is kept in localStorage");
+check(!page.includes('" · "'), "no 'tool · estimator' names");
+console.log(`page_test: ${checks} checks passed`);
