@@ -17,6 +17,12 @@ void mark_unmeasured(Estimate& e) {
     e.inclination_deg = e.azimuth_deg = e.gravity_toolface_deg = e.magnetic_toolface_deg = nan;
     e.inclination_sd_deg = e.azimuth_sd_deg = e.toolface_sd_deg = nan;
     e.dip_deg = e.total_g = e.total_b = nan;
+    // A navigator before alignment has no position or velocity either.
+    if (e.navigation) {
+      for (auto* a : {&e.navigation->position_m, &e.navigation->velocity_mps, &e.navigation->position_sd_m,
+                      &e.navigation->velocity_sd_mps})
+        a->fill(nan);
+    }
     return;
   }
   if (!e.azimuth_valid) e.azimuth_deg = e.azimuth_sd_deg = nan;

@@ -30,6 +30,8 @@ constexpr double kMinMeanSdAccel = 1e-6;   // m/s^2, a tilt update's mean
 // hundred readings (and a held 1 Hz report up to 5 sigma between two reports).
 constexpr double kDepthRangeSigmas = 8.0;
 constexpr double kRadPerSecToDegPerHour = kRadToDeg * 3600.0;
+// A rig reports depth about once a second: a held value is at most this old while the tool moves.
+constexpr double kHeldDepthAge = 2.0;
 
 // The σ of a still stretch's mean specific force (a tilt measurement): the scatter seen, never
 // below the sensor's white noise or the floor.
@@ -137,6 +139,7 @@ void Navigator::reset() {
   have_depth0_ = false;
   last_depth_update_t_ = -1e300;
   latest_depth_.reset();
+  latest_depth_t_ = last_depth_row_t_ = 0;
   zupt_periods_ = 0;
   last_field_warning_.clear();
   gap_warning_until_ = -1;
@@ -464,7 +467,11 @@ void Navigator::process(const Input& in, std::vector<Estimate>& out) {
     mech_.step(a, b);
   }
   if (in.depth) {
+    // A new report: a value that changed, or the first row with depth after rows without (a rig
+    // reports once a second; the logger holds the value or leaves the rows between empty).
+    if (!latest_depth_ || *in.depth != *latest_depth_ || !prev_->depth) latest_depth_t_ = in.t;
     latest_depth_ = in.depth;
+    last_depth_row_t_ = in.t;
     if (!have_depth0_) {
       // The first depth after alignment: the distance counts from the one at alignment, so this
       // reading is referred back by the distance travelled since then.
@@ -708,7 +715,15 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
     }
   }
   if (latest_depth_ && have_depth0_ && in.t - last_depth_update_t_ >= config_.depth_interval_s - 0.5 * dt_nominal_) {
-    const Measurement<1> m = along_hole_distance(x_, *latest_depth_ - depth0_, depth_sd_);
+    // A report's age: the time since the last row that carried depth (depth only at connections,
+    // or left empty between reports), plus how long a held value had stood then (a 1 Hz report held
+    // on every row; at most kHeldDepthAge). A moving tool has gone on by its speed times that age,
+    // which the update's sigma says.
+    const double held = std::min(last_depth_row_t_ - latest_depth_t_, kHeldDepthAge);
+    const double speed = x_.q.toRotationMatrix().col(2).dot(x_.v);
+    const double stale_m = speed * (in.t - last_depth_row_t_ + held);
+    const Measurement<1> m =
+        along_hole_distance(x_, *latest_depth_ - depth0_, std::sqrt(depth_sd_ * depth_sd_ + stale_m * stale_m));
     apply(kf_.update(m.r, m.h, m.noise));
     count("depth_updates");
     last_depth_update_t_ = in.t;

@@ -141,6 +141,17 @@ TEST(Runner, WhatAnInvalidEstimateDidNotMeasureIsNaN) {
   EXPECT_EQ(e.reason, "platform rotating");
 }
 
+// A navigator before alignment: no position, velocity or their sigma (it fills zeros).
+TEST(Runner, AnInvalidNavigationRowHasNoPositionOrVelocity) {
+  Estimate made = filled(false, false, false);
+  made.navigation = NavigationState();
+  const Estimate e = delivered(made);
+  ASSERT_TRUE(e.navigation.has_value());
+  for (const auto* a : {&e.navigation->position_m, &e.navigation->velocity_mps, &e.navigation->position_sd_m,
+                        &e.navigation->velocity_sd_mps})
+    for (double v : *a) EXPECT_TRUE(std::isnan(v)) << v;
+}
+
 TEST(Runner, AnAngleMarkedInvalidAndAnUnknownSigmaAreNaN) {
   const Estimate e = delivered(filled(true, false, true));
   EXPECT_EQ(e.inclination_deg, 4e-16);

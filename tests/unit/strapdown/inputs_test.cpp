@@ -164,6 +164,28 @@ TEST(StrapdownInputs, SensorOffTheToolAxisIsLearntWhileTurning) {
   EXPECT_GT(without.rms_z(), 2.0 * with_states.rms_z());  // what the states are for
 }
 
+// Depth reported only while the string stands still (at connections): between them the last report
+// grows old while the tool moves on, and must not hold the position back.
+TEST(StrapdownInputs, DepthOnlyAtConnections) {
+  const auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 100, 7);
+  sim::DrillingSimulator simulator(scenario);
+  std::vector<TruthSample> truth;
+  std::vector<Sample> samples = simulator.run(&truth);
+  for (std::size_t k = 1; k < samples.size(); ++k)
+    if (truth[k].depth_m != truth[k - 1].depth_m) samples[k].flags &= ~flags::kHasDepth;
+  Navigator nav(parse_parameters(parameters_for(scenario)));
+  std::vector<Estimate> rows;
+  for (const Sample& s : samples) nav.push(s, rows);
+  nav.flush(rows);
+  ASSERT_TRUE(rows.back().valid && rows.back().navigation);
+  const auto& p = rows.back().navigation->position_m;
+  const TruthSample& tr = truth.back();
+  const double err = std::hypot(p[0] - tr.north_m, p[1] - tr.east_m, p[2] - tr.down_m);
+  std::printf("depth at connections only: end position %.3f m of %.1f m drilled\n", err,
+              simulator.trajectory().drilled_length_m());
+  EXPECT_LE(err, 0.02 * simulator.trajectory().drilled_length_m());
+}
+
 std::vector<Sample> turning_from_the_start(double seconds, double accel_noise) {
   std::mt19937_64 rng(3);
   std::normal_distribution<double> unit(0.0, 1.0);

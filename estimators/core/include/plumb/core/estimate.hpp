@@ -13,7 +13,7 @@ namespace plumb {
 struct NavigationState {
   std::array<double, 3> position_m{};       // north, east, down from the collar
   std::array<double, 3> velocity_mps{};     // vn, ve, vd
-  std::array<double, 3> position_sd_m{};    // filter standard deviations (0 when unknown)
+  std::array<double, 3> position_sd_m{};    // filter standard deviations (NaN on topics and in files when unknown)
   std::array<double, 3> velocity_sd_mps{};
   bool still = false;                       // a zero-velocity update is in progress
   std::uint32_t zero_velocity_updates = 0;  // still periods used so far

@@ -203,6 +203,8 @@ class Navigator {
   bool have_depth0_ = false;
   double last_depth_update_t_ = -1e300;
   std::optional<double> latest_depth_;
+  double latest_depth_t_ = 0;    // when the latest depth report came (its value first seen)
+  double last_depth_row_t_ = 0;  // the last row that carried a depth
   std::uint32_t zupt_periods_ = 0;
   std::string last_field_warning_;
   // Never silent (watch_before_alignment, watch_for_stops).
