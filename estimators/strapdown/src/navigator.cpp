@@ -30,6 +30,8 @@ constexpr double kMinMeanSdAccel = 1e-6;   // m/s^2, a tilt update's mean
 // hundred readings (and a held 1 Hz report up to 5 sigma between two reports).
 constexpr double kDepthRangeSigmas = 8.0;
 constexpr double kRadPerSecToDegPerHour = kRadToDeg * 3600.0;
+// 3 sigma of a bias on each of three axes: the largest bias vector the sensor's figures allow.
+constexpr double kBiasSigmas = 3.0 * std::numbers::sqrt3;
 // A rig reports depth about once a second: a held value is at most this old while the tool moves.
 constexpr double kHeldDepthAge = 2.0;
 
@@ -291,8 +293,18 @@ StillnessInput Navigator::detector_input(const Input& in) const {
   si.t = in.t;
   si.depth_m = in.depth;
   if (aligned_) {
-    si.f = in.f - ba_;
-    si.w_minus_expected = in.w - bg_ - mech_.earth_rate_in_tool();
+    // The biases as the filter has them, but never beyond 3 sigma of what the sensor's figures
+    // allow: a filter that has drifted off (no depth, a missed stop) must not blind the detector
+    // to the very stops that would bring it back.
+    // (The GLRT detector of a foot or a hand keeps the filter's own: its users state the noise
+    // and leave the biases to the filter.)
+    const bool bound = detector_.config().mode == StillnessConfig::Mode::Magnitude;
+    const auto bounded = [bound](const Eigen::Vector3d& b, double limit) -> Eigen::Vector3d {
+      const double n = b.norm();
+      return bound && n > limit ? Eigen::Vector3d(b * (limit / n)) : b;
+    };
+    si.f = in.f - bounded(ba_, kBiasSigmas * config_.accel_bias_sd);
+    si.w_minus_expected = in.w - bounded(bg_, kBiasSigmas * config_.gyro_bias_sd) - mech_.earth_rate_in_tool();
     si.extra_gyro_tol = aligned_gyro_tol_;
     si.g = g_;
   } else {
