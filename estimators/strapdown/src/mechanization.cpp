@@ -50,6 +50,7 @@ void Mechanization::begin(const NavState& state) {
   c_int_.setZero();
   axis_cross_v_int_.setZero();
   lever_int_.setZero();
+  last_lever_.setZero();
   stepped_ = false;
 }
 
@@ -120,8 +121,14 @@ void Mechanization::step(const ImuReading& a, const ImuReading& b, const ImuRead
   axis_cross_v_int_ += 0.5 * dt * (axa + axb);
   if (lever_model_) {
     // C~ L(w) at b is the next step's value at a.
-    const Eigen::Matrix<double, 3, 2> lb = c1.lazyProduct(centripetal_matrix(b.w));
-    lever_int_ += (0.5 * dt) * ((stepped_ ? last_lever_ : Eigen::Matrix<double, 3, 2>(c_.lazyProduct(centripetal_matrix(a.w)))) + lb);
+    const auto turning = [](const Eigen::Vector3d& w) { return w.squaredNorm() > kTurningRate2; };
+    const Eigen::Matrix<double, 3, 2> lb = turning(b.w) ? Eigen::Matrix<double, 3, 2>(c1.lazyProduct(centripetal_matrix(b.w)))
+                                                        : Eigen::Matrix<double, 3, 2>::Zero();
+    const Eigen::Matrix<double, 3, 2> la =
+        stepped_ ? last_lever_
+                 : (turning(a.w) ? Eigen::Matrix<double, 3, 2>(c_.lazyProduct(centripetal_matrix(a.w)))
+                                 : Eigen::Matrix<double, 3, 2>::Zero());
+    if (turning(a.w) || turning(b.w)) lever_int_ += (0.5 * dt) * (la + lb);
     last_lever_ = lb;
   }
   c_ = c1;

@@ -91,6 +91,8 @@ void Navigator::reset() {
   azimuth_reference_ = config_.declination ? "true" : "magnetic";
   aligned_ = false;
   aligned_gyro_tol_ = 0;
+  detector_ba_.setZero();
+  detector_bg_.setZero();
   aligned_at_ = 0;
   x_ = NavState();
   bg_.setZero();
@@ -284,7 +286,7 @@ void Navigator::shift_gyro(Input in, std::vector<Estimate>& out) {
 // acceleration of the accelerometers' offset from the tool axis.
 ImuReading Navigator::reading(const Input& in) const {
   ImuReading r{in.t, in.f - ba_, in.w - bg_};
-  if (lever_model_) r.f.noalias() -= centripetal_matrix(r.w) * lever_;
+  if (lever_model_ && r.w.squaredNorm() > kTurningRate2) r.f.noalias() -= centripetal_matrix(r.w) * lever_;
   return r;
 }
 
@@ -296,15 +298,9 @@ StillnessInput Navigator::detector_input(const Input& in) const {
     // The biases as the filter has them, but never beyond 3 sigma of what the sensor's figures
     // allow: a filter that has drifted off (no depth, a missed stop) must not blind the detector
     // to the very stops that would bring it back.
-    // (The GLRT detector of a foot or a hand keeps the filter's own: its users state the noise
-    // and leave the biases to the filter.)
-    const bool bound = detector_.config().mode == StillnessConfig::Mode::Magnitude;
-    const auto bounded = [bound](const Eigen::Vector3d& b, double limit) -> Eigen::Vector3d {
-      const double n = b.norm();
-      return bound && n > limit ? Eigen::Vector3d(b * (limit / n)) : b;
-    };
-    si.f = in.f - bounded(ba_, kBiasSigmas * config_.accel_bias_sd);
-    si.w_minus_expected = in.w - bounded(bg_, kBiasSigmas * config_.gyro_bias_sd) - mech_.earth_rate_in_tool();
+    // (refresh_gyro_tolerance keeps them, once per epoch.)
+    si.f = in.f - detector_ba_;
+    si.w_minus_expected = in.w - detector_bg_ - mech_.earth_rate_in_tool();
     si.extra_gyro_tol = aligned_gyro_tol_;
     si.g = g_;
   } else {
@@ -326,6 +322,15 @@ void Navigator::refresh_gyro_tolerance() {
   const double bias_sd = std::sqrt(p.block<3, 3>(kGyroBias, kGyroBias).diagonal().maxCoeff());
   const double att_sd = std::sqrt(p.block<3, 3>(kAtt, kAtt).diagonal().maxCoeff());
   aligned_gyro_tol_ = 3.0 * bias_sd + 3.0 * std::min(att_sd, 1.0) * kEarthRate;
+  // (The GLRT detector of a foot or a hand keeps the filter's own: its users state the noise and
+  // leave the biases to the filter.)
+  const bool bound = detector_.config().mode == StillnessConfig::Mode::Magnitude;
+  const auto bounded = [bound](const Eigen::Vector3d& b, double limit) -> Eigen::Vector3d {
+    const double n = b.norm();
+    return bound && n > limit ? Eigen::Vector3d(b * (limit / n)) : b;
+  };
+  detector_ba_ = bounded(ba_, kBiasSigmas * config_.accel_bias_sd);
+  detector_bg_ = bounded(bg_, kBiasSigmas * config_.gyro_bias_sd);
 }
 
 void Navigator::refresh_noise(double dt) {

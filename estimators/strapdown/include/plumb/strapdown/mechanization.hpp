@@ -64,6 +64,10 @@ struct StepIntegrals {
   void clear() { *this = StepIntegrals(); }
 };
 
+// Below this squared rate (0.01 rad/s) the centripetal acceleration of a point 1 cm off the axis is
+// under 1e-6 m/s^2: not worth a product per reading.
+inline constexpr double kTurningRate2 = 1e-4;
+
 // The centripetal acceleration of a point r = (r_x, r_y, 0) off the tool axis, w x (w x r) =
 // L(w) r: L's columns are w x (w x e_x) and w x (w x e_y).
 inline Eigen::Matrix<double, 3, 2> centripetal_matrix(const Eigen::Vector3d& w) {

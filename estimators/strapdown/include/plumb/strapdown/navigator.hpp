@@ -196,6 +196,8 @@ class Navigator {
   StateVector correction_ = StateVector::Zero();
   StillnessDetector detector_;
   double aligned_gyro_tol_ = 0;  // the detector's extra gyro tolerance once aligned (refresh_gyro_tolerance)
+  // The biases the detector takes out once aligned: the filter's, within 3 sigma of the figures.
+  Eigen::Vector3d detector_ba_ = Eigen::Vector3d::Zero(), detector_bg_ = Eigen::Vector3d::Zero();
   StillnessState still_state_;
   StillStats align_stats_, zaru_stats_, mag_stats_;
   bool mag_done_this_period_ = false;
