@@ -298,7 +298,7 @@ StillnessInput Navigator::detector_input(const Input& in) const {
     // The biases as the filter has them, but never beyond 3 sigma of what the sensor's figures
     // allow: a filter that has drifted off (no depth, a missed stop) must not blind the detector
     // to the very stops that would bring it back.
-    // (refresh_gyro_tolerance keeps them, once per epoch.)
+    // (refresh_detector_allowances keeps them, once per epoch.)
     si.f = in.f - detector_ba_;
     si.w_minus_expected = in.w - detector_bg_ - mech_.earth_rate_in_tool();
     si.extra_gyro_tol = aligned_gyro_tol_;
@@ -315,9 +315,10 @@ StillnessInput Navigator::detector_input(const Input& in) const {
   return si;
 }
 
-// What the detector does not know of w_expected once aligned: 3 sigma of the gyro bias estimate and
-// of the earth rate's projection. It changes with P only, at the filter's epochs.
-void Navigator::refresh_gyro_tolerance() {
+// Once aligned, at the filter's epochs (they change with the filter only): what the detector does
+// not know of w_expected (3 sigma of the gyro bias estimate and of the earth rate's projection), and
+// the biases it takes out.
+void Navigator::refresh_detector_allowances() {
   const StateMatrix& p = kf_.covariance();
   const double bias_sd = std::sqrt(p.block<3, 3>(kGyroBias, kGyroBias).diagonal().maxCoeff());
   const double att_sd = std::sqrt(p.block<3, 3>(kAtt, kAtt).diagonal().maxCoeff());
@@ -692,7 +693,7 @@ void Navigator::align(const Input& in) {
   }
   integrals_.clear();
   mech_.begin(x_);
-  refresh_gyro_tolerance();
+  refresh_detector_allowances();
   if (config_.smooth) {
     smoother_.store(StateMatrix::Identity(), 0.0, correction_, x_, bg_, ba_, kf_.covariance());
     correction_.setZero();
@@ -747,7 +748,7 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   }
   // The minor steps go on from the corrected state.
   mech_.begin(x_);
-  refresh_gyro_tolerance();
+  refresh_detector_allowances();
   watch_for_stops(in.t);
   if (config_.smooth) smoother_.store(phi, dt, correction_, x_, bg_, ba_, kf_.covariance());
   emit(in.t, out);

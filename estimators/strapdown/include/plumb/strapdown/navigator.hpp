@@ -150,7 +150,7 @@ class Navigator {
   StillnessInput detector_input(const Input& in) const;
   ImuReading reading(const Input& in) const;
   void refresh_noise(double dt);
-  void refresh_gyro_tolerance();
+  void refresh_detector_allowances();
   double field_azimuth() const;
   std::string reason() const;
   void watch_before_alignment(const Input& in);
@@ -195,7 +195,7 @@ class Navigator {
   double last_epoch_t_ = 0;
   StateVector correction_ = StateVector::Zero();
   StillnessDetector detector_;
-  double aligned_gyro_tol_ = 0;  // the detector's extra gyro tolerance once aligned (refresh_gyro_tolerance)
+  double aligned_gyro_tol_ = 0;  // the detector's extra gyro tolerance once aligned (refresh_detector_allowances)
   // The biases the detector takes out once aligned: the filter's, within 3 sigma of the figures.
   Eigen::Vector3d detector_ba_ = Eigen::Vector3d::Zero(), detector_bg_ = Eigen::Vector3d::Zero();
   StillnessState still_state_;
