@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Checks attitude CSV rows printed by `plumb topic echo --csv` against the simulated truth.
 
-usage: check_estimates.py FILE --inclination I --azimuth A [--inc-tol D] [--azi-tol D] [--azi-offset D]
+usage: check_estimates.py FILE --inclination I --azimuth A [--inc-tol D] [--azi-tol D] [--azi-offset D] [--no-azimuth]
                           [--expect-invalid]
 The tolerances are the caller's physics budget (see e2e_estimation.sh)."""
 import argparse
@@ -29,6 +29,8 @@ def main():
     p.add_argument("--azi-offset", type=float, default=0.0,
                    help="expected azimuth error (a known bias of the method), deg")
     p.add_argument("--expect-invalid", action="store_true")
+    p.add_argument("--no-azimuth", action="store_true",
+                   help="the plugin estimates no azimuth: its cell must be empty (not measured)")
     p.add_argument("--min-rows", type=int, default=1)
     a = p.parse_args()
     with open(a.file, newline="") as f:
@@ -49,8 +51,12 @@ def main():
             continue
         di = number(r["inclination_deg"]) - a.inclination
         da = angle_diff(number(r["azimuth_deg"]), a.azimuth) - a.azi_offset
-        ok = valid and abs(di) <= a.inc_tol and abs(da) <= a.azi_tol and all(
-            math.isfinite(number(r[k])) for k in ("inclination_deg", "azimuth_deg", "rpm"))
+        if a.no_azimuth:
+            azimuth_ok = math.isnan(number(r["azimuth_deg"]))
+        else:
+            azimuth_ok = abs(da) <= a.azi_tol and math.isfinite(number(r["azimuth_deg"]))
+        ok = valid and abs(di) <= a.inc_tol and azimuth_ok and all(
+            math.isfinite(number(r[k])) for k in ("inclination_deg", "rpm"))
         print(f"{name}: inc {number(r['inclination_deg']):.4f} (err {di:+.4f}, tol {a.inc_tol}) "
               f"azi {number(r['azimuth_deg']):.3f} (err {da + a.azi_offset:+.3f}, expected {a.azi_offset:+.3f} +- {a.azi_tol}) rpm {number(r['rpm']):.1f} "
               f"{'ok' if ok else 'FAIL'}")

@@ -53,6 +53,6 @@ run plumb-sim --inclination 3 --azimuth 45 --rpm 0 --duration 4 --snr-accel 40 -
   --wait-subscribers 30 > "$work/sim.log" 2>&1 || fail "plumb-sim: $(cat "$work/sim.log")"
 wait $host_pid && pass "installed plumb-estimator ran the out-of-tree plugin" || fail "host: $(cat "$work/host.log")"
 wait $echo_pid && python3 "$here/../e2e/check_estimates.py" "$work/att.csv" --inclination 3 --azimuth 45 \
-  --inc-tol 0.05 --azi-tol 400 && pass "its attitude reached plumb topic echo" ||
+  --inc-tol 0.05 --no-azimuth && pass "its attitude reached plumb topic echo (no azimuth: an empty cell)" ||
   fail "echo: $(cat "$work/echo.err" "$work/att.csv")"
 finish
