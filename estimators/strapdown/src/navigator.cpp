@@ -532,19 +532,20 @@ void Navigator::process(const Input& in, std::vector<Estimate>& out) {
 
 void Navigator::before_alignment(const Input& in, std::vector<Estimate>& out) {
   watch_before_alignment(in);
+  const StillnessInput si = detector_input(in);
   if (in.gyro_bad || in.accel_bad) {
     const bool was_still = detector_.still();
     detector_.reset();
     still_state_ = StillnessState();
     still_state_.ended = was_still;
   } else {
-    still_state_ = detector_.update(detector_input(in));
+    still_state_ = detector_.update(si);
     // Noise neither stated nor measured yet: a still period cannot be judged, so none starts.
     if (!noise_known()) still_state_ = StillnessState();
   }
   if (still_state_.started) count("still_periods");
   if (still_state_.still) align_stats_.add(in.f, in.w, in.b, in.t);
-  if (!still_state_.still) tally_.add(detector_.binding_check(detector_input(in).extra_gyro_tol));
+  if (!still_state_.still) tally_.add(detector_.binding_check(si.extra_gyro_tol));
   const bool long_enough = align_stats_.duration() >= config_.align_s;
   const bool period_over = still_state_.ended && align_stats_.count() >= StillnessConfig::kMinWindowSamples;
   if (still_state_.still && long_enough) {

@@ -17,17 +17,6 @@ cleanup() {
 }
 trap cleanup EXIT
 
-# expect_usage "description" "stderr pattern" command...: exit status 2 and one stderr line.
-expect_usage() {
-  local what=$1 pattern=$2; shift 2
-  local err rc=0
-  err=$("$@" 2>&1 >/dev/null) || rc=$?
-  if [ $rc -ne 2 ]; then fail "$what: exit $rc (expected 2, a usage error): $err"; return; fi
-  if [ "$(printf '%s\n' "$err" | grep -c .)" -ne 1 ]; then fail "$what: expected one stderr line, got: $err"; return; fi
-  if ! printf '%s' "$err" | grep -qE -- "$pattern"; then fail "$what: stderr '$err' lacks /$pattern/"; return; fi
-  pass "$what: $err"
-}
-
 # --- One grammar: usage errors are one line and exit status 2, on every executable.
 expect_usage "plumb: unknown option" "plumb: .*--nosuch.*see plumb --help" "$bin/plumb" topic list --nosuch
 expect_usage "plumb topic echo: no topic" "topic is required|topic" "$bin/plumb" topic echo

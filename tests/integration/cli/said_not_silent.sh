@@ -13,17 +13,6 @@ here=$(dirname "$0")
 . "$here/../wait.sh"
 start_work_with_programs
 
-# expect_usage "description" "stderr pattern" command...: exit status 2 and one stderr line.
-expect_usage() {
-  local what=$1 pattern=$2; shift 2
-  local err rc=0
-  err=$("$@" 2>&1 >/dev/null) || rc=$?
-  if [ $rc -ne 2 ]; then fail "$what: exit $rc (expected 2, a usage error): $err"; return; fi
-  if [ "$(printf '%s\n' "$err" | grep -c .)" -ne 1 ]; then fail "$what: expected one stderr line, got: $err"; return; fi
-  if ! printf '%s' "$err" | grep -qE -- "$pattern"; then fail "$what: stderr '$err' lacks /$pattern/"; return; fi
-  pass "$what: $err"
-}
-
 # --- A misspelt plugin or transport name is a usage error naming the close matches.
 expect_usage "plumb-estimator --plugin" "unknown estimator 'compensate': did you mean compensated\?" \
   timeout 20 "$bin/plumb-estimator" --plugin compensate
