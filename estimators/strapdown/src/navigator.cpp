@@ -98,6 +98,7 @@ void Navigator::reset() {
   bg_.setZero();
   ba_.setZero();
   lever_.setZero();
+  gyro_scale_ = 0;
   lever_model_ = false;
   kf_ = ErrorStateFilter();
   noise_.gyro_arw = config_.gyro_arw;
@@ -286,6 +287,7 @@ void Navigator::shift_gyro(Input in, std::vector<Estimate>& out) {
 // acceleration of the accelerometers' offset from the tool axis.
 ImuReading Navigator::reading(const Input& in) const {
   ImuReading r{in.t, in.f - ba_, in.w - bg_};
+  r.w.z() /= 1.0 + gyro_scale_;
   if (lever_model_ && r.w.squaredNorm() > kTurningRate2) r.f.noalias() -= centripetal_matrix(r.w) * lever_;
   return r;
 }
@@ -630,6 +632,7 @@ void Navigator::align(const Input& in) {
   bg_.setZero();
   ba_.setZero();
   lever_.setZero();
+  gyro_scale_ = 0;
   StateMatrix p0 = StateMatrix::Zero();
   const double tilt_sd = 2.0 * deg;
   p0.block<3, 3>(kAtt, kAtt).diagonal() << tilt_sd * tilt_sd, tilt_sd * tilt_sd, heading_sd * heading_sd;
@@ -639,6 +642,7 @@ void Navigator::align(const Input& in) {
   p0.block<3, 3>(kAccelBias, kAccelBias).diagonal().setConstant(config_.accel_bias_sd * config_.accel_bias_sd);
   p0(kDistance, kDistance) = depth_sd_ * depth_sd_;
   if (lever_model_) p0.block<2, 2>(kLever, kLever).diagonal().setConstant(config_.lever_arm_sd * config_.lever_arm_sd);
+  p0(kGyroScale, kGyroScale) = config_.gyro_scale_sd * config_.gyro_scale_sd;
   const double n = stats.count();
   const double dt = dt_nominal_ > 0 ? dt_nominal_ : 0.01;
   adopt_measured_noise(dt);
@@ -702,7 +706,7 @@ void Navigator::align(const Input& in) {
 }
 
 void Navigator::apply(const StateVector& dx) {
-  feed_back(dx, x_, bg_, ba_, &lever_);
+  feed_back(dx, x_, bg_, ba_, &lever_, &gyro_scale_);
   correction_ += dx;
   g_ -= dx[kGravity];
   mech_.set_gravity(g_);

@@ -61,6 +61,7 @@ struct StepIntegrals {
   Eigen::Vector3d axis_n = Eigen::Vector3d::Zero(); // integral of the tool axis C_b^n e_z
   Eigen::Vector3d axis_cross_v = Eigen::Vector3d::Zero();  // integral of axis x v
   Eigen::Matrix<double, 3, 2> c_lever = Eigen::Matrix<double, 3, 2>::Zero();  // integral of C_b^n L(w)
+  Eigen::Vector3d spin_axis = Eigen::Vector3d::Zero();  // integral of the tool axis times the rate about it
   void clear() { *this = StepIntegrals(); }
 };
 
@@ -126,7 +127,7 @@ class Mechanization {
   Eigen::Vector3d u_ = Eigen::Vector3d::Zero(), u_sum_ = Eigen::Vector3d::Zero();
   double s_sum_ = 0;
   Eigen::Matrix3d c_int_ = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d axis_cross_v_int_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d axis_cross_v_int_ = Eigen::Vector3d::Zero(), spin_int_ = Eigen::Vector3d::Zero();
   Eigen::Matrix<double, 3, 2> lever_int_ = Eigen::Matrix<double, 3, 2>::Zero(), last_lever_ = Eigen::Matrix<double, 3, 2>::Zero();
   bool lever_model_ = false;
   // Of the last reading (valid after the first step since begin()): C~ f, and axis x velocity in b0.

@@ -62,6 +62,7 @@ struct NavigatorConfig {
   double accel_vrw = 0.03 / 60.0;                                   // m/s/sqrt(s)
   double gyro_bias_sd = 1.0 * 3.14159265358979323846 / 180.0 / 3600.0;  // rad/s, turn-on
   double accel_bias_sd = 0.3e-3 * 9.80665;                          // m/s^2
+  double gyro_scale_sd = 100e-6;        // scale-factor error about the tool axis, 1 sigma (fraction)
   double gyro_bias_instability = 0.0;  // rad/s reached over bias_time_s (random walk)
   double accel_bias_instability = 0.0;
   double bias_time_s = 3600;
@@ -119,6 +120,7 @@ class Navigator {
   const NavState& state() const { return x_; }
   const Eigen::Vector3d& gyro_bias() const { return bg_; }
   const Eigen::Vector3d& accel_bias() const { return ba_; }
+  double gyro_scale() const { return gyro_scale_; }
   const StateMatrix& covariance() const { return kf_.covariance(); }
   bool still() const { return detector_.still(); }
   double time() const { return last_t_.value_or(0.0); }
@@ -186,6 +188,7 @@ class Navigator {
   NavState x_;
   Eigen::Vector3d bg_ = Eigen::Vector3d::Zero(), ba_ = Eigen::Vector3d::Zero();
   Eigen::Vector2d lever_ = Eigen::Vector2d::Zero();  // accelerometers' offset from the tool axis (x, y), m
+  double gyro_scale_ = 0;  // the z gyro's scale-factor error: it reads (1 + gyro_scale_) times the rate
   bool lever_model_ = false;
   ErrorStateFilter kf_;
   ProcessNoise noise_;
