@@ -151,7 +151,7 @@ void ErrorStateFilter::predict(const StateMatrix& phi, double dt, const ProcessN
 }
 
 void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bias, Eigen::Vector3d& accel_bias,
-               Eigen::Vector2d* lever, double* gyro_scale) {
+               Eigen::Vector2d* lever, double* gyro_scale, double* mag_axial) {
   // C(true) = (I + [phi x])^-1 C(est) = exp(-[phi x]) C(est): a rotation on the navigation side.
   state.q = (quaternion_from_rotation_vector(-dx.segment<3>(kAtt)) * state.q).normalized();
   state.v -= dx.segment<3>(kVel);
@@ -161,6 +161,7 @@ void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bia
   state.s -= dx[kDistance];
   if (lever != nullptr) *lever -= dx.segment<2>(kLever);
   if (gyro_scale != nullptr) *gyro_scale -= dx[kGyroScale];
+  if (mag_axial != nullptr) *mag_axial -= dx[kMagAxial];
 }
 
 }  // namespace plumb::strapdown

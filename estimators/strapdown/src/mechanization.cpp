@@ -32,6 +32,15 @@ inline Eigen::Quaterniond rotation_quaternion(const Eigen::Vector3d& phi) {
 
 }  // namespace
 
+Eigen::Vector3d mean_to_instant(const Eigen::Vector3d& mean_f, const Eigen::Vector3d& w, double dt) {
+  const double theta = w.norm() * dt;
+  if (theta < 1e-3) return mean_f;
+  const Eigen::Vector3d u = w / w.norm();
+  const Eigen::Vector3d along = u * u.dot(mean_f);
+  const double half = 0.5 * theta;
+  return along + (mean_f - along) * (half / std::sin(half));
+}
+
 Mechanization::Mechanization(const Eigen::Vector3d& w_ie_n, double g) : w_ie_(w_ie_n), g_n_(0.0, 0.0, g) {}
 
 void Mechanization::begin(const NavState& state) {

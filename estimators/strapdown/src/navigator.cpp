@@ -99,6 +99,7 @@ void Navigator::reset() {
   ba_.setZero();
   lever_.setZero();
   gyro_scale_ = 0;
+  mag_axial_ = 0;
   lever_model_ = false;
   kf_ = ErrorStateFilter();
   noise_.gyro_arw = config_.gyro_arw;
@@ -289,6 +290,7 @@ ImuReading Navigator::reading(const Input& in) const {
   ImuReading r{in.t, in.f - ba_, in.w - bg_};
   r.w.z() /= 1.0 + gyro_scale_;
   if (lever_model_ && r.w.squaredNorm() > kTurningRate2) r.f.noalias() -= centripetal_matrix(r.w) * lever_;
+  if (config_.samples_are_means && dt_nominal_ > 0) r.f = mean_to_instant(r.f, r.w, dt_nominal_);
   return r;
 }
 
@@ -643,6 +645,8 @@ void Navigator::align(const Input& in) {
   p0(kDistance, kDistance) = depth_sd_ * depth_sd_;
   if (lever_model_) p0.block<2, 2>(kLever, kLever).diagonal().setConstant(config_.lever_arm_sd * config_.lever_arm_sd);
   p0(kGyroScale, kGyroScale) = config_.gyro_scale_sd * config_.gyro_scale_sd;
+  // A drilling string's magnetization is along its axis; a foot or a hand has no such axis.
+  if (use_mag_ && config_.lateral_velocity_update) p0(kMagAxial, kMagAxial) = config_.mag_axial_bias_sd * config_.mag_axial_bias_sd;
   const double n = stats.count();
   const double dt = dt_nominal_ > 0 ? dt_nominal_ : 0.01;
   adopt_measured_noise(dt);
@@ -706,7 +710,7 @@ void Navigator::align(const Input& in) {
 }
 
 void Navigator::apply(const StateVector& dx) {
-  feed_back(dx, x_, bg_, ba_, &lever_, &gyro_scale_);
+  feed_back(dx, x_, bg_, ba_, &lever_, &gyro_scale_, &mag_axial_);
   correction_ += dx;
   g_ -= dx[kGravity];
   mech_.set_gravity(g_);
@@ -787,8 +791,11 @@ void Navigator::still_updates(bool period_end) {
 
 void Navigator::magnetic_update() {
   mag_done_this_period_ = true;
-  const Eigen::Vector3d b = mag_stats_.mean_b(), f = mag_stats_.mean_f();
-  const double total = b.norm(), dip = dip_of(f, b);
+  // The gate sees the field as read, as the references learnt at alignment did; the heading, the
+  // field less the axial bias the filter estimates.
+  const Eigen::Vector3d raw_b = mag_stats_.mean_b(), f = mag_stats_.mean_f();
+  const Eigen::Vector3d b = raw_b - mag_axial_ * Eigen::Vector3d::UnitZ();
+  const double total = raw_b.norm(), dip = dip_of(f, raw_b);
   const double deg = std::numbers::pi / 180.0;
   if (std::abs(total - b0_.value_or(total)) > config_.field_tol_uT ||
       std::abs(dip - dip0_.value_or(dip)) > config_.dip_tol) {
@@ -834,7 +841,9 @@ void Navigator::fill_attitude(Estimate& e, const NavState& x, const StateMatrix&
   e.gravity_toolface_deg = a.toolface_valid ? wrap_deg_360(a.toolface * kRadToDeg) : 0.0;
   e.inclination_sd_deg = a.inclination_sd * kRadToDeg;
   e.azimuth_sd_deg = a.azimuth_sd * kRadToDeg;
-  e.toolface_sd_deg = a.toolface_sd * kRadToDeg;
+  // The toolface of a turning tool is known only as well as the instant it stands for (the row's
+  // mean rate: e.rpm is filled before).
+  e.toolface_sd_deg = std::hypot(a.toolface_sd * kRadToDeg, std::abs(e.rpm) * 6.0 * config_.time_tag_sd);
   e.valid = true;
   e.azimuth_valid = a.azimuth_valid;
   e.toolface_valid = a.toolface_valid;

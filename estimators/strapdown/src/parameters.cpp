@@ -72,6 +72,7 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"field_tol_uT", "0.5", "a stop's |B| further than this from the reference skips its azimuth update (uT)"},
       {"dip_tol_deg", "0.3", "a stop's dip further than this from the reference skips its azimuth update (deg)"},
       {"mag_heading_sd_deg", "0.05", "magnetic heading model error per stop (deg), beside the noise"},
+      {"mag_axial_bias_uT", "0.3", "magnetization of the drill string along the tool axis, 1 sigma (uT): it turns the magnetic azimuth the same way at every stop; 0: not modelled"},
       {"mag_update_s", "5", "field averaged this long per stop for the azimuth update (s)"},
       {"kf_rate_hz", "20", "filter epochs per second (covariance propagation, updates, smoother storage)"},
       {"zupt_sd_mps", "0.001", "velocity of a still tool, 1 sigma (m/s)"},
@@ -82,6 +83,8 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"depth_sd_m", "", "measured depth noise, 1 sigma (m); empty: 0.01 or what the depth reports show before alignment, whichever is larger"},
       {"depth_interval_s", "1", "seconds between measured-depth updates"},
       {"lever_arm_sd_m", "0.01", "how far the accelerometers may sit off the tool axis, 1 sigma (m): turning, they feel its centripetal acceleration; 0: not modelled"},
+      {"imu_samples", "instant", "what a reading is: instant (the value at its time stamp) or mean (the mean over its interval, stamped at the middle, as integrating sensors and decimating converters report)"},
+      {"time_tag_sd_s", "0.0005", "how well a reading's time stamp gives the instant it stands for, 1 sigma (s): the toolface of a turning tool is uncertain by its rate times this"},
       {"smooth", "0", "offline backward (RTS) smoother: push() emits nothing, flush() emits every row smoothed"},
       {"max_gap_s", "1", "a time step longer than this is a gap: reported, bridged by prediction only (s)"},
       {"gyro_time_offset_s", "0", "gyro readings were measured this long after their time stamp (s)"},
@@ -156,6 +159,7 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   c.field_tol_uT = r.number("field_tol_uT", 0, 1000);
   c.dip_tol = r.number("dip_tol_deg", 0, 90) * kDegToRad;
   c.mag_heading_sd = r.number("mag_heading_sd_deg", 0, 90) * kDegToRad;
+  c.mag_axial_bias_sd = r.number("mag_axial_bias_uT", 0, 100);
   c.mag_update_s = r.number("mag_update_s", 0, 3600);
   c.kf_rate_hz = r.number("kf_rate_hz", 0.01, 1e4);
   c.zupt_sd = r.number("zupt_sd_mps", 1e-9, 10);
@@ -168,6 +172,13 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   c.depth_noise_stated = depth_sd.has_value();
   c.depth_interval_s = r.number("depth_interval_s", 0, 3600);
   c.lever_arm_sd = r.number("lever_arm_sd_m", 0, 1);
+  const auto samples = given.find("imu_samples");
+  const std::string sample_kind = samples == given.end() ? "instant" : samples->second;
+  if (sample_kind != "instant" && sample_kind != "mean") {
+    throw ParameterError("parameter 'imu_samples': '" + sample_kind + "' is not one of instant, mean");
+  }
+  c.samples_are_means = sample_kind == "mean";
+  c.time_tag_sd = r.number("time_tag_sd_s", 0, 1);
   c.smooth = r.boolean("smooth");
   c.max_gap_s = r.number("max_gap_s", 1e-6, 1e6);
   c.gyro_time_offset_s = r.number("gyro_time_offset_s", -1, 1);

@@ -47,6 +47,8 @@ inline estimator::Parameters parameters_for(const sim::DrillingScenario& s) {
   set("accel_vrw_mps_rt_h", std::max(s.grade.accel_vrw_mps_rt_h, 1e-4));
   set("gyro_bias_dph", std::max(s.grade.gyro_bias_deg_h, 1e-3));
   set("accel_bias_mg", std::max(s.grade.accel_bias_mg, 1e-3));
+  // The string's magnetization as the user would state it: the spread the simulator draws it from.
+  set("mag_axial_bias_uT", s.magnetometer.axial_bias_sd_uT);
   return p;
 }
 

@@ -57,6 +57,7 @@ struct NavigatorConfig {
   double dip_tol = 0.3 * 3.14159265358979323846 / 180.0;
   double mag_heading_sd = 0.05 * 3.14159265358979323846 / 180.0;  // model error per still period
   double mag_update_s = 5;             // field averaged this long (or the whole period) per update
+  double mag_axial_bias_sd = 0.3;      // drill-string magnetization along the tool axis, 1 sigma (uT)
   // Sensor model (per axis).
   double gyro_arw = 0.05 * 3.14159265358979323846 / 180.0 / 60.0;   // rad/sqrt(s)
   double accel_vrw = 0.03 / 60.0;                                   // m/s/sqrt(s)
@@ -91,6 +92,12 @@ struct NavigatorConfig {
   // once (take_notices), with the detector's test that fails and the parameter to change.
   double notice_after_s = 60;
   double no_stop_notice_s = 3600;
+  // Each reading is the mean over its interval (an integrating sensor, a decimating converter),
+  // stamped at the interval's middle, instead of an instant's value.
+  bool samples_are_means = false;
+  // How well a reading's time stamp gives the instant it stands for (jitter, a converter's group
+  // delay), 1 sigma (s): the toolface of a tool turning at w is uncertain by w times this.
+  double time_tag_sd = 0.5e-3;
   // Output and offline.
   bool smooth = false;
   double max_gap_s = 1.0;
@@ -121,6 +128,7 @@ class Navigator {
   const Eigen::Vector3d& gyro_bias() const { return bg_; }
   const Eigen::Vector3d& accel_bias() const { return ba_; }
   double gyro_scale() const { return gyro_scale_; }
+  double mag_axial_bias() const { return mag_axial_; }
   const StateMatrix& covariance() const { return kf_.covariance(); }
   bool still() const { return detector_.still(); }
   double time() const { return last_t_.value_or(0.0); }
@@ -189,6 +197,7 @@ class Navigator {
   Eigen::Vector3d bg_ = Eigen::Vector3d::Zero(), ba_ = Eigen::Vector3d::Zero();
   Eigen::Vector2d lever_ = Eigen::Vector2d::Zero();  // accelerometers' offset from the tool axis (x, y), m
   double gyro_scale_ = 0;  // the z gyro's scale-factor error: it reads (1 + gyro_scale_) times the rate
+  double mag_axial_ = 0;   // the magnetometers' bias along the tool axis, uT
   bool lever_model_ = false;
   ErrorStateFilter kf_;
   ProcessNoise noise_;
