@@ -69,7 +69,7 @@ void Navigator::reset() {
        {"samples", "accepted", "non_finite", "time_backwards", "repeated_time", "no_gyro", "gyro_saturated",
         "accel_saturated", "mag_unusable", "out_of_range", "gaps", "accel_in_g", "still_periods",
         "zero_velocity_updates", "zero_rate_updates", "tilt_updates", "azimuth_updates", "disturbed_field",
-        "lateral_velocity_updates", "depth_updates", "rows", "invalid_rows"}) {
+        "lateral_velocity_updates", "depth_updates", "tally_updates", "rows", "invalid_rows"}) {
     counters_[name] = 0;
   }
   // Map nodes stay where they are: the per-sample counters are bumped through pointers, not looked up.
@@ -147,6 +147,8 @@ void Navigator::reset() {
   latest_depth_.reset();
   latest_depth_t_ = last_depth_row_t_ = 0;
   zupt_periods_ = 0;
+  tally_stops_ = 0;
+  tally_distance_ = 0;
   last_field_warning_.clear();
   gap_warning_until_ = -1;
   next_output_t_ = 0;
@@ -671,6 +673,8 @@ void Navigator::align(const Input& in) {
   // From now on the detector sees w less the expected earth rate and bias: its long means restart.
   detector_.restart_stretch();
   aligned_at_ = in.t;
+  // The still period of the alignment is the tally's stop 0, not a connection.
+  stop_started_t_ = std::numeric_limits<double>::infinity();
   last_epoch_t_ = in.t;
   correction_.setZero();
 
@@ -741,6 +745,11 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
       count("lateral_velocity_updates");
     }
   }
+  if (still_state_.started) stop_started_t_ = in.t;
+  if (still_state_.still && in.t - stop_started_t_ >= config_.pipe_connection_s) {
+    tally_update();
+    stop_started_t_ = std::numeric_limits<double>::infinity();  // once per stop
+  }
   if (latest_depth_ && have_depth0_ && in.t - last_depth_update_t_ >= config_.depth_interval_s - 0.5 * dt_nominal_) {
     // A report's age: the time since the last row that carried depth (depth only at connections,
     // or left empty between reports), plus how long a held value had stood then (a 1 Hz report held
@@ -761,6 +770,18 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   watch_for_stops(in.t);
   if (config_.smooth) smoother_.store(phi, dt, correction_, x_, bg_, ba_, kf_.covariance());
   emit(in.t, out);
+}
+
+void Navigator::tally_update() {
+  if (config_.pipe_tally_m.empty() || latest_depth_) return;  // measured depth, when there is one, wins
+  if (!config_.pipe_tally_repeats && tally_stops_ >= config_.pipe_tally_m.size()) return;
+  const double joint = config_.pipe_tally_m[config_.pipe_tally_repeats ? 0 : tally_stops_];
+  ++tally_stops_;
+  const Measurement<1> m = along_hole_distance(x_, tally_distance_ + joint,
+                                               config_.pipe_tally_sd * std::sqrt(static_cast<double>(tally_stops_)));
+  apply(kf_.update(m.r, m.h, m.noise));
+  count("tally_updates");
+  tally_distance_ += joint;
 }
 
 void Navigator::still_updates(bool period_end) {

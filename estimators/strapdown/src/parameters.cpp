@@ -1,8 +1,10 @@
 #include "plumb/strapdown/parameters.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include "plumb/estimator/parameter_reader.hpp"
@@ -32,6 +34,41 @@ std::optional<double> optional_number(const estimator::ParameterReader& reader, 
   const auto it = given.find(name);
   if (it == given.end() || it->second.empty()) return std::nullopt;
   return reader.number(name, min, max);
+}
+
+// pipe_joint_m (one length for every stop) or pipe_tally_m (a list), not both.
+void parse_tally(const estimator::ParameterReader& r, const estimator::Parameters& given, NavigatorConfig& c) {
+  const std::optional<double> joint = optional_number(r, given, "pipe_joint_m", 0.01, 100);
+  const auto list = given.find("pipe_tally_m");
+  const bool has_list = list != given.end() && !list->second.empty();
+  if (joint && has_list) throw ParameterError("parameters 'pipe_joint_m' and 'pipe_tally_m' exclude each other: give one");
+  c.pipe_tally_sd = r.number("pipe_tally_sd_m", 0, 10);
+  c.pipe_connection_s = r.number("pipe_connection_s", 0, 1e5);
+  if (joint) {
+    c.pipe_tally_m = {*joint};
+    c.pipe_tally_repeats = true;
+    return;
+  }
+  if (!has_list) return;
+  std::string text = list->second;
+  for (char& ch : text) {
+    if (ch == ',' || ch == ';') ch = ' ';
+  }
+  std::istringstream in(text);
+  std::string item;
+  while (in >> item) {
+    std::size_t used = 0;
+    double v = std::numeric_limits<double>::quiet_NaN();
+    try {
+      v = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != item.size() || !(v >= 0 && v <= 100)) {
+      throw ParameterError("parameter 'pipe_tally_m': '" + item + "' is not a joint length in [0, 100] m");
+    }
+    c.pipe_tally_m.push_back(v);
+  }
 }
 
 }  // namespace
@@ -82,6 +119,10 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"nhc_sd_mps", "0.01", "lateral velocity of a drilling tool, 1 sigma (m/s)"},
       {"depth_sd_m", "", "measured depth noise, 1 sigma (m); empty: 0.01 or what the depth reports show before alignment, whichever is larger"},
       {"depth_interval_s", "1", "seconds between measured-depth updates"},
+      {"pipe_joint_m", "", "no depth sensor: every stop after the alignment is a connection that ran in one joint of this length (m)"},
+      {"pipe_tally_m", "", "no depth sensor: the joints run in after each stop, stop by stop, comma-separated (m; the alignment's stop is the first; 0 for a stop without a connection)"},
+      {"pipe_tally_sd_m", "0.02", "how well each joint of the tally is measured, 1 sigma (m)"},
+      {"pipe_connection_s", "20", "with a tally: a still period this long is a connection (a pause while drilling is shorter) (s)"},
       {"lever_arm_sd_m", "0.01", "how far the accelerometers may sit off the tool axis, 1 sigma (m): turning, they feel its centripetal acceleration; 0: not modelled"},
       {"imu_samples", "instant", "what a reading is: instant (the value at its time stamp) or mean (the mean over its interval, stamped at the middle, as integrating sensors and decimating converters report)"},
       {"time_tag_sd_s", "0.0005", "how well a reading's time stamp gives the instant it stands for, 1 sigma (s): the toolface of a turning tool is uncertain by its rate times this"},
@@ -172,6 +213,7 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   c.depth_noise_stated = depth_sd.has_value();
   c.depth_interval_s = r.number("depth_interval_s", 0, 3600);
   c.lever_arm_sd = r.number("lever_arm_sd_m", 0, 1);
+  parse_tally(r, given, c);
   const auto samples = given.find("imu_samples");
   const std::string sample_kind = samples == given.end() ? "instant" : samples->second;
   if (sample_kind != "instant" && sample_kind != "mean") {

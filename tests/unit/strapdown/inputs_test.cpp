@@ -242,6 +242,41 @@ TEST(StrapdownInputs, DrillStringMagnetizationKeepsTheAzimuthSigmaHonest) {
   EXPECT_GT(without, 3.0);
 }
 
+// No depth sensor, only the pipe tally: each 60 s connection after a segment is a depth of the
+// joints run in so far. The reference run drills 8 m joints; the tally says 8 m each, or the
+// joints one by one as measured on the rack (2 cm each).
+TEST(StrapdownInputs, PipeTallyGivesTheDepthAtEachConnection) {
+  const auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 100, 9);
+  sim::DrillingSimulator simulator(scenario);
+  std::vector<TruthSample> truth;
+  std::vector<Sample> samples = simulator.run(&truth);
+  for (Sample& s : samples) s.flags &= ~flags::kHasDepth;
+  const double drilled = simulator.trajectory().drilled_length_m();
+  double without = 0;
+  for (const char* tally : {"", "pipe_joint_m", "pipe_tally_m"}) {
+    estimator::Parameters p = parameters_for(scenario);
+    if (std::string(tally) == "pipe_joint_m") p[tally] = "8";
+    if (std::string(tally) == "pipe_tally_m") p[tally] = "8.01,7.98,8.02,7.99";
+    Navigator nav(parse_parameters(p));
+    const std::vector<Estimate> rows = navigate_all(nav, samples);
+    const double err = end_position_error(rows, truth.back());
+    const auto& sd = rows.back().navigation->position_sd_m;
+    const double sd3 = std::sqrt(sd[0] * sd[0] + sd[1] * sd[1] + sd[2] * sd[2]);
+    std::printf("%-13s end position %.3f m of %.1f m drilled (sigma %.3f m), %d tally updates\n",
+                *tally ? tally : "no tally", err, drilled, sd3, static_cast<int>(nav.counters().at("tally_updates")));
+    if (!*tally) {
+      without = err;
+      continue;
+    }
+    EXPECT_EQ(nav.counters().at("tally_updates"), 4u) << tally;
+    EXPECT_LE(err, 0.02 * drilled) << tally;
+    EXPECT_LE(err, 3.0 * sd3) << tally;  // its sigma says so
+  }
+  EXPECT_GT(without, 0.04 * drilled);  // what the tally is for
+  EXPECT_THROW(parse_parameters({{"pipe_tally_m", "8,x"}}), estimator::ParameterError);
+  EXPECT_THROW(parse_parameters({{"pipe_tally_m", "8"}, {"pipe_joint_m", "8"}}), estimator::ParameterError);
+}
+
 // Depth reported only while the string stands still (at connections): between them the last report
 // grows old while the tool moves on, and must not hold the position back.
 TEST(StrapdownInputs, DepthOnlyAtConnections) {

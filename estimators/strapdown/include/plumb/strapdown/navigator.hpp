@@ -78,6 +78,14 @@ struct NavigatorConfig {
   double nhc_sd = 0.01;                // m/s
   double depth_sd = 0.01;              // m
   double depth_interval_s = 1;
+  // No depth sensor: a pipe tally. Joint i is run in after stop i (the alignment's stop is stop 0),
+  // so stop k stands at the sum of the first k joints from the alignment. A still period counts as
+  // a connection once it has lasted pipe_connection_s (a pause while drilling is shorter), and
+  // gives its update then. One length repeats for every stop; the sigma is per joint and adds up.
+  std::vector<double> pipe_tally_m;
+  bool pipe_tally_repeats = false;
+  double pipe_tally_sd = 0.02;         // m per joint
+  double pipe_connection_s = 20;
   // How far the accelerometers may sit off the tool axis (1 sigma, m; the filter's lever-arm
   // states). 0: not modelled (nor without lateral_velocity_update or with the GLRT detector: a foot
   // or a hand has no tool axis).
@@ -170,6 +178,7 @@ class Navigator {
   void watch_for_stops(double t);
   std::string failing_test_text() const;
   void refresh_depth_tolerance();
+  void tally_update();
 
   NavigatorConfig config_;
   std::map<std::string, std::uint64_t> counters_;
@@ -220,6 +229,10 @@ class Navigator {
   double latest_depth_t_ = 0;    // when the latest depth report came (its value first seen)
   double last_depth_row_t_ = 0;  // the last row that carried a depth
   std::uint32_t zupt_periods_ = 0;
+  // Pipe tally (tally_update): the stops counted as connections and the tally's distance at the last.
+  std::size_t tally_stops_ = 0;
+  double tally_distance_ = 0;
+  double stop_started_t_ = 0;
   std::string last_field_warning_;
   // Never silent (watch_before_alignment, watch_for_stops).
   NoiseFloor noise_floor_;
