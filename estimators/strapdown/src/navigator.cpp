@@ -738,7 +738,10 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
     count("zero_velocity_updates");
     still_updates(false);
   } else {
-    if (still_state_.ended) still_updates(true);
+    if (still_state_.ended) {
+      still_updates(true);
+      late_stop_end();
+    }
     if (config_.lateral_velocity_update) {
       const Measurement<2> m = lateral_velocity(x_, config_.nhc_sd);
       apply(kf_.update(m.r, m.h, m.noise));
@@ -770,6 +773,16 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   watch_for_stops(in.t);
   if (config_.smooth) smoother_.store(phi, dt, correction_, x_, bg_, ba_, kf_.covariance());
   emit(in.t, out);
+}
+
+// A still period's end is seen late when the string speeds up slowly (its acceleration under the
+// accelerometer noise): the zero-velocity updates held the velocity at zero while the tool already
+// moved along its axis, at up to the rate of penetration. Said to the filter as velocity
+// uncertainty along the axis at the end; depth, where there is some, takes it back out.
+void Navigator::late_stop_end() {
+  if (!(config_.rop_sd > 0) || !config_.lateral_velocity_update) return;
+  const Eigen::Vector3d axis = x_.q.toRotationMatrix().col(2);
+  kf_.covariance().block<3, 3>(kVel, kVel) += (config_.rop_sd * config_.rop_sd) * axis * axis.transpose();
 }
 
 void Navigator::tally_update() {

@@ -76,6 +76,7 @@ struct NavigatorConfig {
   // a foot, a hand-carried or a vehicle-mounted sensor does not.
   bool lateral_velocity_update = true;
   double nhc_sd = 0.01;                // m/s
+  double rop_sd = 0.02;                // rate of penetration, 1 sigma (m/s): the speed a stop's end may be seen late at
   double depth_sd = 0.01;              // m
   double depth_interval_s = 1;
   // No depth sensor: a pipe tally. Joint i is run in after stop i (the alignment's stop is stop 0),
@@ -179,6 +180,7 @@ class Navigator {
   std::string failing_test_text() const;
   void refresh_depth_tolerance();
   void tally_update();
+  void late_stop_end();
 
   NavigatorConfig config_;
   std::map<std::string, std::uint64_t> counters_;
