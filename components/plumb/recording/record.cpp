@@ -64,29 +64,94 @@ bool recordable(const transport::DiscoveredTopic& t) {
   return t.writers > 0 && t.name.rfind("plumb/", 0) == 0 && topics::find_type_support(t.type_name) != nullptr;
 }
 
+// The metadata record that opens a recording: who recorded it, where, on which domain, when.
+void write_start_metadata(mcap::Writer& writer, const components::Connection& conn, const RecordOptions& o) {
+  const auto start = std::chrono::system_clock::now();
+  writer.write_metadata({kMetadataName,
+                         {{"vendor", conn.transport->vendor_version()},
+                          {"transport", conn.transport->name()},
+                          {"host", host_name()},
+                          {"domain", domain_text(o.transport)},
+                          {"start_time", utc_time(start)},
+                          {"start_time_ns", std::to_string(std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                                               start.time_since_epoch()).count())},
+                          {"sensor_qos", o.reliable ? "reliable keep_all" : "best_effort keep_last 64"}}});
+}
+
+using NamedTopics = std::vector<std::pair<std::string, const transport::TypeSupport*>>;
+
+// What the recorder waits for, for the notes when nothing comes.
+std::string waiting_for(const NamedTopics& named) {
+  if (named.empty()) return "any plumb topic";
+  std::string text;
+  for (const auto& [topic, type] : named) text += (text.empty() ? "" : ", ") + topic;
+  return text;
+}
+
+// What the network does carry, for the same notes.
+std::string heard(transport::Participant& participant, const components::TransportOptions& options) {
+  std::string with_writers;
+  for (const auto& t : participant.discovered_topics())
+    if (t.writers > 0) with_writers += (with_writers.empty() ? "" : ", ") + t.name;
+  return with_writers.empty() ? "no topic has a writer on domain " + domain_text(options)
+                              : "topics with writers on domain " + domain_text(options) + ": " + with_writers;
+}
+
+// Records until Ctrl-C or --duration: drains the readers, writes a chunk every --flush-interval,
+// adds topics that appear later (without a list), and says at 3 s, 6 s, 12 s... when nothing came.
+// Returns why the writer failed, empty when it did not.
+std::string record_until_stopped(const RecordOptions& o, transport::Participant& participant, mcap::Writer& writer,
+                                 Recorder& recorder, const NamedTopics& named, Clock::time_point t0) {
+  double next_silence_note_s = 3;
+  auto last_flush = t0, last_discovery = t0;
+  while (!g_stop) {
+    const auto now = Clock::now();
+    if (const double silent_s = std::chrono::duration<double>(now - t0).count(); silent_s >= next_silence_note_s) {
+      next_silence_note_s *= 2;
+      if (recorder.messages() == 0)
+        std::cerr << "plumb record: nothing received for " << static_cast<int>(silent_s) << " s on " << waiting_for(named)
+                  << "; " << heard(participant, o.transport) << std::endl;
+    }
+    if (o.duration_s > 0 && std::chrono::duration<double>(now - t0).count() >= o.duration_s) break;
+    try {
+      recorder.drain();
+      if (now - last_flush >= std::chrono::duration<double>(o.flush_s)) {
+        writer.flush();
+        last_flush = now;
+      }
+    } catch (const mcap::Error& e) {
+      return e.what();
+    }
+    // Without a list: the estimator, navigation and sensor-stream topics that appear later too.
+    if (named.empty() && now - last_discovery >= std::chrono::milliseconds(500)) {
+      last_discovery = now;
+      for (const auto& t : participant.discovered_topics()) {
+        if (recordable(t) && !recorder.has(t.name)) recorder.add(t.name, *topics::find_type_support(t.type_name));
+      }
+    }
+    recorder.wait(std::chrono::milliseconds(20));
+  }
+  try {
+    recorder.drain();  // what arrived before the stop
+  } catch (const mcap::Error& e) {
+    return e.what();
+  }
+  return {};
+}
+
 int run_record(const RecordOptions& o) {
   if (o.flush_s <= 0) throw std::invalid_argument("--flush-interval must be > 0 seconds");
   if (o.chunk_kb == 0) throw std::invalid_argument("--chunk-size must be > 0 KiB");
   auto conn = components::connect(o.transport, "plumb-record");
   // Named topics are resolved before the file is created: a typo leaves no empty recording behind.
-  std::vector<std::pair<std::string, const transport::TypeSupport*>> named;
+  NamedTopics named;
   for (const auto& t : o.topics) named.emplace_back(t, &resolve_topic_type(*conn.participant, t, o.wait_s));
 
   mcap::WriterOptions wo;
   wo.chunk_size = o.chunk_kb * 1024;
   wo.compress = !o.uncompressed;
   mcap::Writer writer(o.output, wo);
-  const auto start = std::chrono::system_clock::now();
-  const auto& options = o.transport;
-  writer.write_metadata({kMetadataName,
-                         {{"vendor", conn.transport->vendor_version()},
-                          {"transport", conn.transport->name()},
-                          {"host", host_name()},
-                          {"domain", domain_text(options)},
-                          {"start_time", utc_time(start)},
-                          {"start_time_ns", std::to_string(std::chrono::duration_cast<std::chrono::nanoseconds>(
-                                                               start.time_since_epoch()).count())},
-                          {"sensor_qos", o.reliable ? "reliable keep_all" : "best_effort keep_last 64"}}});
+  write_start_metadata(writer, conn, o);
   Recorder recorder(*conn.participant, writer, o.reliable);
   for (const auto& [topic, type] : named) recorder.add(topic, *type);
   if (named.empty()) {
@@ -98,59 +163,8 @@ int run_record(const RecordOptions& o) {
   std::cerr << "plumb record: recording " << (named.empty() ? "every plumb topic" : std::to_string(named.size()) + " topic(s)")
             << " to " << o.output << " (Ctrl-C to stop)" << std::endl;
 
-  // What the recorder waits for, and the note when nothing comes (at 3 s, 6 s, 12 s...).
-  std::string waiting_for = "any plumb topic";
-  if (!named.empty()) {
-    waiting_for.clear();
-    for (const auto& [topic, type] : named) waiting_for += (waiting_for.empty() ? "" : ", ") + topic;
-  }
-  const auto heard = [&] {
-    std::string with_writers;
-    for (const auto& t : conn.participant->discovered_topics())
-      if (t.writers > 0) with_writers += (with_writers.empty() ? "" : ", ") + t.name;
-    return with_writers.empty() ? "no topic has a writer on domain " + domain_text(options)
-                                : "topics with writers on domain " + domain_text(options) + ": " + with_writers;
-  };
-  double next_silence_note_s = 3;
-
   const auto t0 = Clock::now();
-  auto last_flush = t0, last_discovery = t0;
-  std::string failure;
-  while (!g_stop) {
-    const auto now = Clock::now();
-    if (const double silent_s = std::chrono::duration<double>(now - t0).count(); silent_s >= next_silence_note_s) {
-      next_silence_note_s *= 2;
-      if (recorder.messages() == 0)
-        std::cerr << "plumb record: nothing received for " << static_cast<int>(silent_s) << " s on " << waiting_for << "; "
-                  << heard() << std::endl;
-    }
-    if (o.duration_s > 0 && std::chrono::duration<double>(now - t0).count() >= o.duration_s) break;
-    try {
-      recorder.drain();
-      if (now - last_flush >= std::chrono::duration<double>(o.flush_s)) {
-        writer.flush();
-        last_flush = now;
-      }
-    } catch (const mcap::Error& e) {
-      failure = e.what();
-      break;
-    }
-    // Without a list: the estimator, navigation and sensor-stream topics that appear later too.
-    if (named.empty() && now - last_discovery >= std::chrono::milliseconds(500)) {
-      last_discovery = now;
-      for (const auto& t : conn.participant->discovered_topics()) {
-        if (recordable(t) && !recorder.has(t.name)) recorder.add(t.name, *topics::find_type_support(t.type_name));
-      }
-    }
-    recorder.wait(std::chrono::milliseconds(20));
-  }
-  if (failure.empty()) {
-    try {
-      recorder.drain();  // what arrived before the stop
-    } catch (const mcap::Error& e) {
-      failure = e.what();
-    }
-  }
+  std::string failure = record_until_stopped(o, *conn.participant, writer, recorder, named, t0);
   const double elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
   try {
     writer.close();
@@ -165,8 +179,9 @@ int run_record(const RecordOptions& o) {
     return 1;
   }
   if (writer.statistics().message_count == 0) {
-    components::print_error("plumb record", "nothing recorded: no message on " + waiting_for + " in " + format_measured(elapsed) +
-                                                " s (" + heard() + "); " + o.output + " holds no message");
+    components::print_error("plumb record", "nothing recorded: no message on " + waiting_for(named) + " in " +
+                                                format_measured(elapsed) + " s (" + heard(*conn.participant, o.transport) +
+                                                "); " + o.output + " holds no message");
     return 1;
   }
   std::cerr << "plumb record: " << writer.statistics().message_count << " message(s) on " << topics_with_data
