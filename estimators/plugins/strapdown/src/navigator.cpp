@@ -594,8 +594,68 @@ void Navigator::align(const Input& in) {
     if (!dip0_) dip0_ = dip_of(f, b);
   }
 
+  double heading_sd = 0;
+  const Eigen::Matrix3d c_bn = initial_attitude(f, w, b, mag, heading_sd);
+
+  // The earth rate's horizontal part is taken along the frame's north. That is exact in a true
+  // frame (gyrocompass, or declination given); in a magnetic frame without a declination, or a
+  // relative one, it errs by the horizontal earth rate times sin(declination): 0.9 deg/h per 5 deg
+  // of declination at 45 deg latitude, a gyro-bias-like error the zero-rate updates absorb.
+  mech_ = Mechanization(earth_rate_ned(config_.latitude, 0.0), g_);
+  // A drilling tool turns about its own axis and moves along it; a foot or a hand (no
+  // lateral-velocity update, the GLRT detector) has no such axis: no offset from it, no turns of
+  // 10^4 degrees about it, no magnetized string along it and no rate of penetration.
+  drilling_tool_ = config_.lateral_velocity_update && detector_.config().mode == StillnessConfig::Mode::Magnitude;
+  lever_model_ = config_.lever_arm_sd > 0 && drilling_tool_;
+  mech_.set_lever_model(lever_model_);
+  x_ = NavState();
+  x_.q = Eigen::Quaterniond(c_bn).normalized();
+  bg_.setZero();
+  ba_.setZero();
+  lever_.setZero();
+  gyro_scale_ = 0;
+  mag_axial_ = 0;
+  const double dt = dt_nominal_ > 0 ? dt_nominal_ : 0.01;
+  adopt_measured_noise(dt);
+  const double sd_mean_f = mean_force_sd(stats, noise_.accel_vrw, dt);
+  kf_.reset(initial_covariance(f, heading_sd, sd_mean_f));
+  aligned_ = true;
+  refresh_depth_tolerance();
+  tally_.clear();
+  last_still_t_ = in.t;
+  // From now on the detector sees w less the expected earth rate and bias: its long means restart.
+  detector_.restart_stretch();
+  aligned_at_ = in.t;
+  // The still period of the alignment is the tally's stop 0, not a connection.
+  stop_started_t_ = std::numeric_limits<double>::infinity();
+  last_epoch_t_ = in.t;
+  correction_.setZero();
+
+  first_measurements(stats, sd_mean_f, dt);
+  mag_done_this_period_ = true;
+  zaru_stats_.clear();
+  mag_stats_.clear();
+  zupt_periods_ = 1;
+  if (in.depth) {
+    depth0_ = *in.depth;
+    have_depth0_ = true;
+  }
+  integrals_.clear();
+  mech_.begin(x_);
+  refresh_detector_allowances();
+  if (config_.smooth) {
+    smoother_.store(StateMatrix::Identity(), 0.0, correction_, x_, bg_, ba_, kf_.covariance());
+    correction_.setZero();
+  }
+}
+
+// The attitude at alignment: tilt from the mean specific force, the heading from the earth rate
+// (gyrocompass), a given azimuth, the magnetometer, or none (relative). Sets the azimuth reference
+// and whether the magnetometer serves azimuth; heading_sd receives the heading's sigma.
+Eigen::Matrix3d Navigator::initial_attitude(const Eigen::Vector3d& f, const Eigen::Vector3d& w,
+                                            const Eigen::Vector3d& b, bool mag, double& heading_sd) {
   const double deg = std::numbers::pi / 180.0;
-  double heading_sd = 10.0 * deg;
+  heading_sd = 10.0 * deg;
   std::optional<Eigen::Matrix3d> c_bn;
   use_mag_ = false;
   if (config_.gyrocompass) {
@@ -620,24 +680,13 @@ void Navigator::align(const Input& in) {
     c_bn = tilt_and_azimuth_attitude(f, 0.0);
     azimuth_reference_ = "relative";
   }
+  return *c_bn;
+}
 
-  // The earth rate's horizontal part is taken along the frame's north. That is exact in a true
-  // frame (gyrocompass, or declination given); in a magnetic frame without a declination, or a
-  // relative one, it errs by the horizontal earth rate times sin(declination): 0.9 deg/h per 5 deg
-  // of declination at 45 deg latitude, a gyro-bias-like error the zero-rate updates absorb.
-  mech_ = Mechanization(earth_rate_ned(config_.latitude, 0.0), g_);
-  // A drilling tool turns about its own axis and moves along it; a foot or a hand (no
-  // lateral-velocity update, the GLRT detector) has no such axis: no offset from it, no turns of
-  // 10^4 degrees about it, no magnetized string along it and no rate of penetration.
-  drilling_tool_ = config_.lateral_velocity_update && detector_.config().mode == StillnessConfig::Mode::Magnitude;
-  lever_model_ = config_.lever_arm_sd > 0 && drilling_tool_;
-  mech_.set_lever_model(lever_model_);
-  x_ = NavState();
-  x_.q = Eigen::Quaterniond(*c_bn).normalized();
-  bg_.setZero();
-  ba_.setZero();
-  lever_.setZero();
-  gyro_scale_ = 0;
+// The filter's covariance at alignment, before its first measurements.
+StateMatrix Navigator::initial_covariance(const Eigen::Vector3d& f, double heading_sd, double sd_mean_f) const {
+  const double deg = std::numbers::pi / 180.0;
+  const double fn = f.norm();
   StateMatrix p0 = StateMatrix::Zero();
   const double tilt_sd = 2.0 * deg;
   p0.block<3, 3>(kAtt, kAtt).diagonal() << tilt_sd * tilt_sd, tilt_sd * tilt_sd, heading_sd * heading_sd;
@@ -651,10 +700,6 @@ void Navigator::align(const Input& in) {
     p0(kGyroScale, kGyroScale) = config_.gyro_scale_sd * config_.gyro_scale_sd;
     if (use_mag_) p0(kMagAxial, kMagAxial) = config_.mag_axial_bias_sd * config_.mag_axial_bias_sd;
   }
-  const double n = stats.count();
-  const double dt = dt_nominal_ > 0 ? dt_nominal_ : 0.01;
-  adopt_measured_noise(dt);
-  const double sd_mean_f = mean_force_sd(stats, noise_.accel_vrw, dt);
   if (config_.gravity) {
     p0(kGravity, kGravity) = config_.gravity_sd * config_.gravity_sd;
   } else {
@@ -667,21 +712,15 @@ void Navigator::align(const Input& in) {
     p0.block<1, 3>(kGravity, kAccelBias) = -var_b * up.transpose();
     p0.block<3, 1>(kAccelBias, kGravity) = -var_b * up;
   }
-  kf_.reset(p0);
-  aligned_ = true;
-  refresh_depth_tolerance();
-  tally_.clear();
-  last_still_t_ = in.t;
-  // From now on the detector sees w less the expected earth rate and bias: its long means restart.
-  detector_.restart_stretch();
-  aligned_at_ = in.t;
-  // The still period of the alignment is the tally's stop 0, not a connection.
-  stop_started_t_ = std::numeric_limits<double>::infinity();
-  last_epoch_t_ = in.t;
-  correction_.setZero();
+  return p0;
+}
 
-  // The alignment's own means as the filter's first measurements: they shape P (tilt against the
-  // accelerometer biases, heading against the gyro biases) as the data warrant.
+// The alignment's own means as the filter's first measurements.
+void Navigator::first_measurements(const StillStats& stats, double sd_mean_f, double dt) {
+  const Eigen::Vector3d f = stats.mean_f(), w = stats.mean_w();
+  const double n = stats.count();
+  // They shape P (tilt against the accelerometer biases, heading against the gyro biases) as the
+  // data warrant.
   const double sd_w = std::max({stats.sample_sd_w(), noise_.gyro_arw / std::sqrt(dt)});
   {
     const Measurement<3> m = tilt(x_, ba_, g_, f, sd_mean_f);
@@ -697,21 +736,6 @@ void Navigator::align(const Input& in) {
     mag_stats_ = stats;
     mag_done_this_period_ = false;
     magnetic_update();
-  }
-  mag_done_this_period_ = true;
-  zaru_stats_.clear();
-  mag_stats_.clear();
-  zupt_periods_ = 1;
-  if (in.depth) {
-    depth0_ = *in.depth;
-    have_depth0_ = true;
-  }
-  integrals_.clear();
-  mech_.begin(x_);
-  refresh_detector_allowances();
-  if (config_.smooth) {
-    smoother_.store(StateMatrix::Identity(), 0.0, correction_, x_, bg_, ba_, kf_.covariance());
-    correction_.setZero();
   }
 }
 

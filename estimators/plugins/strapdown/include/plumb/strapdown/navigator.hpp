@@ -159,6 +159,10 @@ class Navigator {
   void process(const Input& in, std::vector<Estimate>& out);
   void before_alignment(const Input& in, std::vector<Estimate>& out);
   void align(const Input& in);
+  Eigen::Matrix3d initial_attitude(const Eigen::Vector3d& f, const Eigen::Vector3d& w, const Eigen::Vector3d& b,
+                                   bool mag, double& heading_sd);
+  StateMatrix initial_covariance(const Eigen::Vector3d& f, double heading_sd, double sd_mean_f) const;
+  void first_measurements(const StillStats& stats, double sd_mean_f, double dt);
   void epoch(const Input& in, std::vector<Estimate>& out);
   void still_updates(bool period_end);
   void magnetic_update();
