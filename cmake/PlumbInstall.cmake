@@ -52,6 +52,16 @@ endif()
 file(GLOB plumb_idl_install ${PROJECT_SOURCE_DIR}/idl/*.idl)
 install(FILES ${plumb_idl_install} DESTINATION ${PLUMB_INSTALL_DATADIR}/idl COMPONENT common)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/transports/config/ DESTINATION ${PLUMB_INSTALL_DATADIR}/config COMPONENT common)
+# Parameters and launch files; the build tree has them in the same place (build/share/plumb/...),
+# so that the README's commands read the same files from a build as from an installation.
+foreach(kind params launch)
+  file(GLOB plumb_${kind}_install CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/deploy/${kind}/*.yaml)
+  install(FILES ${plumb_${kind}_install} DESTINATION ${PLUMB_INSTALL_DATADIR}/${kind} COMPONENT common)
+  foreach(file ${plumb_${kind}_install})
+    get_filename_component(name ${file} NAME)
+    configure_file(${file} ${PROJECT_BINARY_DIR}/share/plumb/${kind}/${name} COPYONLY)
+  endforeach()
+endforeach()
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT common)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT common
         FILES_MATCHING PATTERN "*.md" PATTERN "*.xml")

@@ -57,6 +57,7 @@ ls "$work"/plots/*.svg > /dev/null 2>&1 && pass "plumb compare wrote plots" || f
 head -1 "$work/capture.csv" 2>/dev/null | grep -qE '(^|,)t,fx,fy,fz,bx,by,bz(,|$)' &&
   pass "a sensor capture is a sensor CSV: $(head -1 "$work/capture.csv")" || fail "capture.csv header: $(head -1 "$work/capture.csv" 2>/dev/null)"
 [ -s "$work/coeffs.txt" ] && pass "calibration wrote coeffs.txt before the bridge read it" || fail "no coeffs.txt"
+[ -s "$work/nav-file.csv" ] && pass "plumb estimate with a parameters file wrote nav-file.csv" || fail "no nav-file.csv"
 grep -qE '^compensated .*inc ' "$work/log.txt" && grep -q 'plumb-estimator: .*compensated: 1 estimates' "$work/log.txt" &&
   pass "an estimate from the bridge's calibrated topic" || fail "no estimate from plumb/sensor/calibrated"
 [ -e "$work/board" ] && fail "plumb-sim left its pseudo-terminal link ./board" || pass "./board removed at the end"
