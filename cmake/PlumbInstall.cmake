@@ -14,7 +14,8 @@
 #   cyclonedds, fastdds  one transport plugin each (their package depends on the vendor library)
 #   tool    plumb-bridge, plumb-sim (the tool computer, next to the sensors)
 #   surface plumb-estimator, plumb-calibrate, plumb-survey, plumb-display (its page is built into the
-#           executable: no web files to install), the estimator plugins (the surface computer)
+#           executable: no web files to install), plumb-wits and plumb-wits-send, the estimator
+#           plugins (the surface computer)
 #   dev     headers, CMake package, example sources and programs (other teams)
 include(CMakePackageConfigHelpers)
 
@@ -42,7 +43,8 @@ foreach(plugin ${plumb_estimator_plugins})
   install(TARGETS plumb_estimator_${plugin} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT surface)
 endforeach()
 install(TARGETS plumb_calibration LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT surface)
-install(TARGETS plumb-estimator plumb-calibrate plumb-survey RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT surface)
+install(TARGETS plumb-estimator plumb-calibrate plumb-survey plumb-wits plumb-wits-send
+        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT surface)
 # The live display, built only where civetweb is installed (components/plumb-display/CMakeLists.txt).
 if(TARGET plumb-display)
   install(TARGETS plumb-display RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT surface)
