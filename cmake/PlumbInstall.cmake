@@ -7,6 +7,11 @@
 #   include/plumb/       public headers: transport API, plugin facility, message types, estimator API
 #   share/plumb/idl/     the IDL files, for teams that generate their own code
 #   share/plumb/config/  DDS configuration files for applications that are not plumb
+#   share/plumb/params/  parameters files (--params-file), share/plumb/launch/ launch files
+#   share/plumb/systemd/env/  templates of /etc/plumb's environment files (the packages' postinst
+#                        copies the missing ones there)
+#   /lib/systemd/system/ the systemd units, when installing to /opt/plumb (the packages); into any
+#                        other prefix they go to PREFIX/lib/systemd/system, for inspection only
 #   share/doc/plumb/     README and docs/
 #
 # Components are the Debian packages of cmake/PlumbPackaging.cmake:
@@ -94,3 +99,36 @@ foreach(example plumb-example-publisher plumb-example-subscriber plumb-c-attitud
     install(TARGETS ${example} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT dev)
   endif()
 endforeach()
+
+# systemd units and the templates of their environment files, per computer. The units name
+# /opt/plumb/bin: they belong where the packages install.
+set(plumb_env ${PROJECT_SOURCE_DIR}/deploy/systemd/env)
+set(plumb_units ${PROJECT_SOURCE_DIR}/deploy/systemd)
+install(FILES ${plumb_env}/plumb.env DESTINATION ${PLUMB_INSTALL_DATADIR}/systemd/env COMPONENT common)
+install(FILES ${plumb_env}/bridge-board.env DESTINATION ${PLUMB_INSTALL_DATADIR}/systemd/env COMPONENT tool)
+set(plumb_surface_units plumb-estimator.service plumb-survey.service plumb-wits.service)
+set(plumb_surface_env estimator.env survey.env wits.env)
+if(TARGET plumb-display)
+  list(APPEND plumb_surface_units plumb-display.service)
+  list(APPEND plumb_surface_env display.env)
+endif()
+list(TRANSFORM plumb_surface_env PREPEND ${plumb_env}/)
+install(FILES ${plumb_surface_env} DESTINATION ${PLUMB_INSTALL_DATADIR}/systemd/env COMPONENT surface)
+# plumb_install_units(COMPONENT UNIT...): decided at install time, since `cmake --install --prefix
+# DIR` and cpack run the same script (cpack with the prefix /opt/plumb and DESTDIR set).
+function(plumb_install_units component)
+  list(TRANSFORM ARGN PREPEND ${plumb_units}/ OUTPUT_VARIABLE files)
+  install(CODE "
+    if(CMAKE_INSTALL_PREFIX STREQUAL \"/opt/plumb\")
+      set(plumb_unit_dir /lib/systemd/system)
+    else()
+      set(plumb_unit_dir \"\${CMAKE_INSTALL_PREFIX}/lib/systemd/system\")
+    endif()
+    file(INSTALL DESTINATION \"\${plumb_unit_dir}\" TYPE FILE FILES ${files})
+  " COMPONENT ${component})
+endfunction()
+plumb_install_units(tool plumb-bridge@.service)
+plumb_install_units(surface ${plumb_surface_units})
+# For the packages' prerm (cmake/PlumbPackaging.cmake): what each one stops on removal.
+set(plumb_tool_stop_units "'plumb-bridge@*.service'")  # quoted: a pattern for systemctl, not the shell
+string(REPLACE ";" " " plumb_surface_stop_units "${plumb_surface_units}")
