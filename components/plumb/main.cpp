@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "launch/launch_command.hpp"
 #include "plumb/components/cli.hpp"
 
 namespace plumb::cli {
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
   plumb::cli::add_status_command(app);
   plumb::cli::add_config_command(app);
   plumb::cli::add_security_command(app);
+  plumb::cli::add_launch_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,5 +1,6 @@
 // Parameters files: the layout, file and line in every refusal, and the file under --param.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -28,7 +29,10 @@ class ParamsFile : public ::testing::Test {
     }
     return "(no error)";
   }
-  std::string path_ = ::testing::TempDir() + "plumb_params_file_test.yaml";
+  // One file per test and process: ctest runs the tests of this file side by side.
+  std::string path_ = ::testing::TempDir() + "plumb_params_" +
+                      ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+                      std::to_string(::getpid()) + ".yaml";
 };
 
 estimator::Info plugin(const std::string& name, std::vector<std::string> keys) {
