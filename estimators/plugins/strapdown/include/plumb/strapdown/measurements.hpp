@@ -1,0 +1,47 @@
+// Measurement models of the navigator: residual r = h(estimate) - z, Jacobian H with respect to
+// the error state (error_state_filter.hpp), noise covariance R. Each function is pure: the caller
+// decides when a measurement applies (stillness, drilling, depth) and feeds it to the filter.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "plumb/strapdown/error_state_filter.hpp"
+#include "plumb/strapdown/mechanization.hpp"
+
+namespace plumb::strapdown {
+
+template <int M>
+struct Measurement {
+  Eigen::Matrix<double, M, 1> r = Eigen::Matrix<double, M, 1>::Zero();
+  Eigen::Matrix<double, M, kStates> h = Eigen::Matrix<double, M, kStates>::Zero();
+  Eigen::Matrix<double, M, M> noise = Eigen::Matrix<double, M, M>::Zero();
+};
+
+// Still: the velocity is zero. sd: the real velocity of a "still" tool (rig sway, pumps).
+Measurement<3> zero_velocity(const NavState& x, double sd_mps);
+
+// Still: the gyros' mean over a stretch of stillness sees only the earth rate plus their bias:
+// z = mean raw w = C_n^b w_ie + b_g. sd_mean: standard deviation of that mean per axis.
+Measurement<3> zero_rate(const NavState& x, const Eigen::Vector3d& gyro_bias, const Eigen::Vector3d& w_ie,
+                         const Eigen::Vector3d& mean_raw_w, double sd_mean);
+
+// Still: the accelerometers' mean sees only gravity plus their bias: z = mean raw f = -C_n^b g_n + b_a.
+// (Tilt and the horizontal accelerometer biases are one measurement: the filter keeps them correlated.)
+Measurement<3> tilt(const NavState& x, const Eigen::Vector3d& accel_bias, double g, const Eigen::Vector3d& mean_raw_f,
+                    double sd_mean);
+
+// Still: magnetic heading. The mean field in the tool frame, turned into the navigation frame by
+// the estimated attitude, must point at the reference field's azimuth `field_azimuth` (0 in a
+// magnetic frame, the declination in a true one): r = heading of (C_b^n B) - field_azimuth.
+// sd_heading: its standard deviation (rad), noise and model error together. mean_b has the
+// estimated axial bias taken out; the bias state's column is how its error turns the heading.
+Measurement<1> magnetic_heading(const NavState& x, const Eigen::Vector3d& mean_b, double field_azimuth,
+                                double sd_heading);
+
+// Drilling: the tool moves along its own z axis only, so the tool-frame velocity has x = y = 0.
+Measurement<2> lateral_velocity(const NavState& x, double sd_mps);
+
+// Measured depth: the distance travelled along the tool axis since alignment.
+Measurement<1> along_hole_distance(const NavState& x, double measured_distance_m, double sd_m);
+
+}  // namespace plumb::strapdown

@@ -1,0 +1,167 @@
+#include "plumb/strapdown/error_state_filter.hpp"
+
+#include "plumb/strapdown/rotation.hpp"
+
+namespace plumb::strapdown {
+
+using namespace index;
+
+StateMatrix ErrorStateFilter::dynamics(const StepIntegrals& in, const Eigen::Vector3d& w_ie) {
+  StateMatrix f = StateMatrix::Zero();
+  const double dt = in.dt;
+  if (!(dt > 0)) return f;
+  const Eigen::Matrix3d c = in.c_bn / dt;
+  f.block<3, 3>(kAtt, kAtt) = -skew(w_ie);
+  f.block<3, 3>(kAtt, kGyroBias) = -c;
+  f.block<3, 3>(kVel, kAtt) = -skew(in.f_n / dt);
+  f.block<3, 3>(kVel, kVel) = -2.0 * skew(w_ie);
+  f.block<3, 3>(kVel, kAccelBias) = -c;
+  f.block<3, 3>(kPos, kVel) = Eigen::Matrix3d::Identity();
+  f.block<1, 3>(kDistance, kAtt) = (in.axis_cross_v / dt).transpose();
+  f.block<1, 3>(kDistance, kVel) = (in.axis_n / dt).transpose();
+  f(kVel + 2, kGravity) = 1.0;
+  f.block<3, 2>(kVel, kLever) = -in.c_lever / dt;
+  f.block<3, 1>(kAtt, kGyroScale) = -in.spin_axis / dt;
+  return f;
+}
+
+StateMatrix ErrorStateFilter::transition(const StepIntegrals& in, const Eigen::Vector3d& w_ie) {
+  StateMatrix phi = StateMatrix::Identity();
+  const double dt = in.dt;
+  if (!(dt > 0)) return phi;
+  // The non-zero blocks of A = F dt (dynamics()): F's columns 6-8 and 15 are zero and its bias and
+  // gravity rows too, so A^2 takes only products through the attitude and velocity blocks: twelve 3 x 3 products
+  // instead of a 16 x 6 x 16 one, and phi = I + A + A^2 / 2 is written block by block.
+  const Eigen::Matrix3d aaa = -dt * skew(w_ie), aag = -in.c_bn;
+  const Eigen::Matrix3d ava = -skew(in.f_n), avv = 2.0 * aaa;
+  const Eigen::Matrix3d& avb = aag;
+  const Eigen::RowVector3d ada = in.axis_cross_v.transpose(), adv = in.axis_n.transpose();
+  const Eigen::Matrix3d vva = ava * aaa + avv * ava, vvb = avv * avb;
+  const Eigen::Matrix3d vvv = avv * avv;
+  phi.block<3, 3>(kAtt, kAtt) += aaa + 0.5 * aaa * aaa;
+  phi.block<3, 3>(kAtt, kGyroBias) = aag + 0.5 * aaa * aag;
+  phi.block<3, 3>(kVel, kAtt) = ava + 0.5 * vva;
+  phi.block<3, 3>(kVel, kVel) += avv + 0.5 * vvv;
+  phi.block<3, 3>(kVel, kGyroBias) = 0.5 * ava * aag;
+  phi.block<3, 3>(kVel, kAccelBias) = avb + 0.5 * vvb;
+  // dp' = dv: the position rows are dt times the velocity rows of A, and of A^2 / 2 for A^2.
+  phi.block<3, 3>(kPos, kAtt) = (0.5 * dt) * ava;
+  phi.block<3, 3>(kPos, kVel) = dt * (Eigen::Matrix3d::Identity() + 0.5 * avv);
+  phi.block<3, 3>(kPos, kAccelBias) = (0.5 * dt) * avb;
+  phi.block<1, 3>(kDistance, kAtt) = ada + 0.5 * (ada * aaa + adv * ava);
+  phi.block<1, 3>(kDistance, kVel) = adv + 0.5 * adv * avv;
+  phi.block<1, 3>(kDistance, kGyroBias) = 0.5 * ada * aag;
+  phi.block<1, 3>(kDistance, kAccelBias) = 0.5 * adv * avb;
+  // Gravity's column: A's is dt on the down velocity, A^2's is dt times A's down-velocity column.
+  phi.block<3, 1>(kVel, kGravity) = dt * (Eigen::Vector3d::UnitZ() + 0.5 * avv.col(2));
+  phi(kPos + 2, kGravity) = 0.5 * dt * dt;
+  phi(kDistance, kGravity) = 0.5 * dt * adv(2);
+  // The lever arm's columns enter through the velocity as the accelerometer bias's do.
+  const Eigen::Matrix<double, 3, 2> avl = -in.c_lever;
+  phi.block<3, 2>(kVel, kLever) = avl + 0.5 * avv * avl;
+  phi.block<3, 2>(kPos, kLever) = (0.5 * dt) * avl;
+  phi.block<1, 2>(kDistance, kLever) = 0.5 * adv * avl;
+  // The scale factor's column enters through the attitude as a gyro bias along the tool axis does.
+  const Eigen::Vector3d aak = -in.spin_axis;
+  phi.block<3, 1>(kAtt, kGyroScale) = aak + 0.5 * aaa * aak;
+  phi.block<3, 1>(kVel, kGyroScale) = 0.5 * ava * aak;
+  phi(kDistance, kGyroScale) = 0.5 * ada.dot(aak);
+  return phi;
+}
+
+namespace {
+
+// The white noises over dt. They enter through C (a rotation), and are the same on each axis:
+// C q I C' = q I, so Q is diagonal.
+StateVector white_noise(double dt, const ProcessNoise& n) {
+  StateVector q = StateVector::Zero();
+  q.segment<3>(kAtt).setConstant(n.gyro_arw * n.gyro_arw * dt);
+  q.segment<3>(kVel).setConstant(n.accel_vrw * n.accel_vrw * dt);
+  q.segment<3>(kGyroBias).setConstant(n.gyro_bias_walk * n.gyro_bias_walk * dt);
+  q.segment<3>(kAccelBias).setConstant(n.accel_bias_walk * n.accel_bias_walk * dt);
+  return q;
+}
+
+}  // namespace
+
+StateMatrix ErrorStateFilter::sandwich(const StateMatrix& phi, const StateMatrix& m) {
+  // phi's blocks as transition() fills them: rows of attitude (columns: attitude, gyro bias),
+  // velocity (attitude, velocity, both biases), position (attitude, velocity, the identity,
+  // accelerometer bias) and distance (all but position, 1 on the diagonal), each with its gravity
+  // and lever-arm columns; the bias, gravity and lever-arm rows are the identity's. Products by block: 3 x 3 blocks against 3-row strips, about 60 % of the
+  // multiply-adds of full rows of phi.
+  constexpr int a = kAtt, v = kVel, p = kPos, g = kGyroBias, b = kAccelBias, d = kDistance, n = kGravity, l = kLever,
+                k = kGyroScale;
+  StateMatrix pm = m;
+  pm.middleRows<3>(a).noalias() = phi.block<3, 3>(a, a).lazyProduct(m.middleRows<3>(a)) +
+                                  phi.block<3, 3>(a, g).lazyProduct(m.middleRows<3>(g)) +
+                                  phi.block<3, 1>(a, k).lazyProduct(m.row(k));
+  pm.middleRows<3>(v).noalias() =
+      phi.block<3, 3>(v, a).lazyProduct(m.middleRows<3>(a)) + phi.block<3, 3>(v, v).lazyProduct(m.middleRows<3>(v)) +
+      phi.block<3, 3>(v, g).lazyProduct(m.middleRows<3>(g)) + phi.block<3, 3>(v, b).lazyProduct(m.middleRows<3>(b)) +
+      phi.block<3, 1>(v, n).lazyProduct(m.row(n)) + phi.block<3, 2>(v, l).lazyProduct(m.middleRows<2>(l)) +
+      phi.block<3, 1>(v, k).lazyProduct(m.row(k));
+  pm.middleRows<3>(p).noalias() += phi.block<3, 3>(p, a).lazyProduct(m.middleRows<3>(a)) +
+                                   phi.block<3, 3>(p, v).lazyProduct(m.middleRows<3>(v)) +
+                                   phi.block<3, 3>(p, b).lazyProduct(m.middleRows<3>(b)) +
+                                   phi.block<3, 1>(p, n).lazyProduct(m.row(n)) +
+                                   phi.block<3, 2>(p, l).lazyProduct(m.middleRows<2>(l));
+  pm.row(d).noalias() += phi.block<1, 3>(d, a).lazyProduct(m.middleRows<3>(a)) +
+                         phi.block<1, 3>(d, v).lazyProduct(m.middleRows<3>(v)) +
+                         phi.block<1, 3>(d, g).lazyProduct(m.middleRows<3>(g)) +
+                         phi.block<1, 3>(d, b).lazyProduct(m.middleRows<3>(b)) + phi(d, n) * m.row(n) +
+                         phi.block<1, 2>(d, l).lazyProduct(m.middleRows<2>(l)) + phi(d, k) * m.row(k);
+  StateMatrix out = pm;
+  out.middleCols<3>(a).noalias() = pm.middleCols<3>(a).lazyProduct(phi.block<3, 3>(a, a).transpose()) +
+                                   pm.middleCols<3>(g).lazyProduct(phi.block<3, 3>(a, g).transpose()) +
+                                   pm.col(k).lazyProduct(phi.block<3, 1>(a, k).transpose());
+  out.middleCols<3>(v).noalias() = pm.middleCols<3>(a).lazyProduct(phi.block<3, 3>(v, a).transpose()) +
+                                   pm.middleCols<3>(v).lazyProduct(phi.block<3, 3>(v, v).transpose()) +
+                                   pm.middleCols<3>(g).lazyProduct(phi.block<3, 3>(v, g).transpose()) +
+                                   pm.middleCols<3>(b).lazyProduct(phi.block<3, 3>(v, b).transpose()) +
+                                   pm.col(n).lazyProduct(phi.block<3, 1>(v, n).transpose()) +
+                                   pm.middleCols<2>(l).lazyProduct(phi.block<3, 2>(v, l).transpose()) +
+                                   pm.col(k).lazyProduct(phi.block<3, 1>(v, k).transpose());
+  out.middleCols<3>(p).noalias() += pm.middleCols<3>(a).lazyProduct(phi.block<3, 3>(p, a).transpose()) +
+                                    pm.middleCols<3>(v).lazyProduct(phi.block<3, 3>(p, v).transpose()) +
+                                    pm.middleCols<3>(b).lazyProduct(phi.block<3, 3>(p, b).transpose()) +
+                                    pm.col(n).lazyProduct(phi.block<3, 1>(p, n).transpose()) +
+                                    pm.middleCols<2>(l).lazyProduct(phi.block<3, 2>(p, l).transpose());
+  out.col(d).noalias() += pm.middleCols<3>(a).lazyProduct(phi.block<1, 3>(d, a).transpose()) +
+                          pm.middleCols<3>(v).lazyProduct(phi.block<1, 3>(d, v).transpose()) +
+                          pm.middleCols<3>(g).lazyProduct(phi.block<1, 3>(d, g).transpose()) +
+                          pm.middleCols<3>(b).lazyProduct(phi.block<1, 3>(d, b).transpose()) + phi(d, n) * pm.col(n) +
+                          pm.middleCols<2>(l).lazyProduct(phi.block<1, 2>(d, l).transpose()) + phi(d, k) * pm.col(k);
+  return out;
+}
+
+StateMatrix ErrorStateFilter::predicted_covariance(const StateMatrix& phi, const StateMatrix& p, double dt,
+                                                   const ProcessNoise& noise) {
+  const StateVector half_q = 0.5 * white_noise(dt, noise);
+  StateMatrix m = p;
+  m.diagonal() += half_q;
+  StateMatrix out = sandwich(phi, m);
+  out.diagonal() += half_q;
+  return out;
+}
+
+void ErrorStateFilter::predict(const StateMatrix& phi, double dt, const ProcessNoise& noise) {
+  p_ = predicted_covariance(phi, p_, dt, noise);
+  symmetrize();
+}
+
+void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bias, Eigen::Vector3d& accel_bias,
+               Eigen::Vector2d* lever, double* gyro_scale, double* mag_axial) {
+  // C(true) = (I + [phi x])^-1 C(est) = exp(-[phi x]) C(est): a rotation on the navigation side.
+  state.q = (quaternion_from_rotation_vector(-dx.segment<3>(kAtt)) * state.q).normalized();
+  state.v -= dx.segment<3>(kVel);
+  state.p -= dx.segment<3>(kPos);
+  gyro_bias -= dx.segment<3>(kGyroBias);
+  accel_bias -= dx.segment<3>(kAccelBias);
+  state.s -= dx[kDistance];
+  if (lever != nullptr) *lever -= dx.segment<2>(kLever);
+  if (gyro_scale != nullptr) *gyro_scale -= dx[kGyroScale];
+  if (mag_axial != nullptr) *mag_axial -= dx[kMagAxial];
+}
+
+}  // namespace plumb::strapdown

@@ -1,0 +1,187 @@
+#include "plumb/strapdown/mechanization.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace plumb::strapdown {
+
+namespace {
+
+// The two Gauss-Legendre points of a step, as fractions of it.
+constexpr double kGauss1 = 0.5 - std::numbers::sqrt3 / 6.0;
+constexpr double kGauss2 = 0.5 + std::numbers::sqrt3 / 6.0;
+constexpr double kConing = std::numbers::sqrt3 / 12.0;
+
+// The quaternion of a rotation vector: below 0.1 rad by the series of cos(x/2) and sin(x/2)/x to
+// x^8 (the next terms are below 3e-20), which needs no square root, no trigonometry and (the
+// coefficients as reciprocals) no division.
+inline Eigen::Quaterniond rotation_quaternion(const Eigen::Vector3d& phi) {
+  const double t2 = phi.squaredNorm();
+  double c = 0, s = 0;  // cos(|phi|/2), sin(|phi|/2)/|phi|
+  if (t2 < 1e-2) {
+    c = 1.0 - t2 * (1.0 / 8.0) * (1.0 - t2 * (1.0 / 48.0) * (1.0 - t2 * (1.0 / 120.0) * (1.0 - t2 * (1.0 / 224.0))));
+    s = 0.5 * (1.0 - t2 * (1.0 / 24.0) * (1.0 - t2 * (1.0 / 80.0) * (1.0 - t2 * (1.0 / 168.0) * (1.0 - t2 * (1.0 / 288.0)))));
+  } else {
+    const double x = std::sqrt(t2);
+    c = std::cos(0.5 * x);
+    s = std::sin(0.5 * x) / x;
+  }
+  return Eigen::Quaterniond(c, s * phi.x(), s * phi.y(), s * phi.z());
+}
+
+}  // namespace
+
+Eigen::Vector3d mean_to_instant(const Eigen::Vector3d& mean_f, const Eigen::Vector3d& w, double dt) {
+  const double theta = w.norm() * dt;
+  if (theta < 1e-3) return mean_f;
+  const Eigen::Vector3d u = w / w.norm();
+  const Eigen::Vector3d along = u * u.dot(mean_f);
+  const double half = 0.5 * theta;
+  return along + (mean_f - along) * (half / std::sin(half));
+}
+
+Mechanization::Mechanization(const Eigen::Vector3d& w_ie_n, double g) : w_ie_(w_ie_n), g_n_(0.0, 0.0, g) {}
+
+void Mechanization::begin(const NavState& state) {
+  start_ = state;
+  c0_ = state.q.toRotationMatrix();
+  w_b0_ = c0_.transpose() * w_ie_;
+  v_b0_ = c0_.transpose() * state.v;
+  g_b0_ = c0_.transpose() * g_n_;
+  earth_dt_ = 0;
+  b_ = Eigen::Quaterniond::Identity();
+  c_.setIdentity();
+  tau_ = tau_sum_ = 0;
+  u_.setZero();
+  u_sum_.setZero();
+  s_sum_ = 0;
+  c_int_.setZero();
+  axis_cross_v_int_.setZero();
+  spin_int_.setZero();
+  lever_int_.setZero();
+  last_lever_.setZero();
+  stepped_ = false;
+}
+
+void Mechanization::step(const ImuReading& a, const ImuReading& b, const ImuReading* before) {
+  const double dt = b.t - a.t;
+  if (!(dt > 0)) return;
+  // Lagrange parabola through (before, a, b), or the line through (a, b); u in [0, 1] across the step.
+  // Only between evenly spaced readings: across a gap the parabola would extrapolate the noise's
+  // curvature (its coefficients stay within [-1/8, 1] only while the spacings are alike).
+  const double previous_dt = before != nullptr ? a.t - before->t : 0.0;
+  const bool parabola = before != nullptr && previous_dt > 0.5 * dt && previous_dt < 2.0 * dt;
+  // The parabola's Lagrange weights in s = t - a.t: l0 = s (s - dt) / d0, l1 = (s + p)(s - dt) / d1,
+  // l2 = (s + p) s / d2 (p = previous_dt), the denominators once per step.
+  const double inv_d0 = parabola ? 1.0 / (previous_dt * (previous_dt + dt)) : 0.0;
+  const double inv_d1 = parabola ? -1.0 / (previous_dt * dt) : 0.0;
+  const double inv_d2 = parabola ? 1.0 / ((previous_dt + dt) * dt) : 0.0;
+  const Eigen::Vector3d& w_before = parabola ? before->w : a.w;
+  auto rate = [&](double u) -> Eigen::Vector3d {
+    if (!parabola) return a.w + (b.w - a.w) * u;
+    const double s = u * dt;
+    return (s * (s - dt) * inv_d0) * w_before + ((s + previous_dt) * (s - dt) * inv_d1) * a.w +
+           ((s + previous_dt) * s * inv_d2) * b.w;
+  };
+
+  // Attitude: the Magnus step (rates at the Gauss points, the cross product the coning correction)
+  // in as many sub-steps as the turn needs; the earth's rotation of b0 on the other side.
+  const double turn2 = std::max(a.w.squaredNorm(), b.w.squaredNorm()) * dt * dt;
+  Eigen::Quaterniond d;
+  if (turn2 <= kMaxSubstepAngle * kMaxSubstepAngle) {
+    const Eigen::Vector3d w1 = rate(kGauss1), w2 = rate(kGauss2);
+    d = rotation_quaternion(0.5 * dt * (w1 + w2) + (kConing * dt * dt) * w1.cross(w2));
+  } else {
+    const int substeps = std::clamp(static_cast<int>(std::ceil(std::sqrt(turn2) / kMaxSubstepAngle)), 1, 4096);
+    const double h = dt / substeps;
+    d = Eigen::Quaterniond::Identity();
+    for (int i = 0; i < substeps; ++i) {
+      const Eigen::Vector3d w1 = rate((i + kGauss1) / substeps);
+      const Eigen::Vector3d w2 = rate((i + kGauss2) / substeps);
+      d = d * rotation_quaternion(0.5 * h * (w1 + w2) + (kConing * h * h) * w1.cross(w2));
+    }
+  }
+  // The earth's turn of b0 over dt, kept while the steps are alike (it changes only with dt and b0).
+  if (dt != earth_dt_) {
+    earth_dt_ = dt;
+    earth_turn_ = rotation_quaternion(-dt * w_b0_);
+  }
+  b_ = earth_turn_ * b_ * d;
+  const Eigen::Matrix3d c1 = b_.toRotationMatrix();
+
+  // At reading a: the velocity in b0 (less Coriolis, which the full update adds), and the
+  // first-order sums of position and distance.
+  const Eigen::Vector3d va = v_b0_ + u_ + g_b0_ * tau_;
+  // Before the first step since begin() C~ is the identity.
+  const Eigen::Vector3d& fa = stepped_ ? last_f_ : a.f;
+  const Eigen::Vector3d axa = stepped_ ? last_axis_cross_v_ : Eigen::Vector3d(c_.col(2).cross(va));
+  u_sum_ += dt * u_;
+  tau_sum_ += dt * tau_;
+  s_sum_ += dt * c_.col(2).dot(va);
+
+  // Velocity: the trapezoid of C~ f (Heun's sum of the specific force); gravity at the full update.
+  const Eigen::Vector3d fb = c1.lazyProduct(b.f);
+  u_ += 0.5 * dt * (fa + fb);
+  tau_ += dt;
+  const Eigen::Vector3d axb = c1.col(2).cross(v_b0_ + u_ + g_b0_ * tau_);
+
+  // The filter's integrals, by the trapezoid.
+  c_int_ += (0.5 * dt) * (c_ + c1);
+  axis_cross_v_int_ += 0.5 * dt * (axa + axb);
+  spin_int_ += (0.5 * dt) * (a.w.z() * c_.col(2) + b.w.z() * c1.col(2));
+  if (lever_model_) {
+    // C~ L(w) at b is the next step's value at a.
+    const auto turning = [](const Eigen::Vector3d& w) { return w.squaredNorm() > kTurningRate2; };
+    const Eigen::Matrix<double, 3, 2> lb = turning(b.w) ? Eigen::Matrix<double, 3, 2>(c1.lazyProduct(centripetal_matrix(b.w)))
+                                                        : Eigen::Matrix<double, 3, 2>::Zero();
+    const Eigen::Matrix<double, 3, 2> la =
+        stepped_ ? last_lever_
+                 : (turning(a.w) ? Eigen::Matrix<double, 3, 2>(c_.lazyProduct(centripetal_matrix(a.w)))
+                                 : Eigen::Matrix<double, 3, 2>::Zero());
+    if (turning(a.w) || turning(b.w)) lever_int_ += (0.5 * dt) * (la + lb);
+    last_lever_ = lb;
+  }
+  c_ = c1;
+  last_f_ = fb;
+  last_axis_cross_v_ = axb;
+  stepped_ = true;
+}
+
+NavState Mechanization::state() const {
+  NavState x = start_;
+  if (!stepped_) return x;
+  x.q = (start_.q * b_).normalized();
+  const double t = tau_;
+  const Eigen::Vector3d v = start_.v + c0_ * u_ + g_n_ * t;
+  const Eigen::Vector3d dp = start_.v * t + c0_ * u_sum_ + g_n_ * tau_sum_;
+  // Coriolis, -2 w_ie x v, over the steps: the velocity changes by -2 w_ie x (the position's change),
+  // the position by about half that times t (both 1e-4 of the change, or less, at a 20 Hz epoch).
+  x.v = v - 2.0 * w_ie_.cross(dp);
+  x.p = start_.p + dp - t * w_ie_.cross(dp);
+  x.s = start_.s + s_sum_;
+  return x;
+}
+
+void Mechanization::finish(NavState& state, StepIntegrals* integrals) {
+  state = this->state();
+  if (integrals != nullptr && stepped_) {
+    const Eigen::Matrix3d c_bn = c0_ * c_int_;
+    integrals->dt += tau_;
+    integrals->c_bn += c_bn;
+    integrals->f_n += c0_ * u_;
+    integrals->axis_n += c_bn.col(2);
+    integrals->axis_cross_v += c0_ * axis_cross_v_int_;
+    integrals->spin_axis += c0_ * spin_int_;
+    if (lever_model_) integrals->c_lever += c0_ * lever_int_;
+  }
+}
+
+void Mechanization::step(NavState& state, const ImuReading& a, const ImuReading& b, StepIntegrals* integrals,
+                         const ImuReading* before) {
+  begin(state);
+  step(a, b, before);
+  finish(state, integrals);
+}
+
+}  // namespace plumb::strapdown
