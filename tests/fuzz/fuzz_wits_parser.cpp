@@ -26,9 +26,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const auto& f : frames) decoder.decode(f, t += 1);
   if (parser.counters().garbage_bytes > size) std::abort();
   frames.clear();
+  // The line break may also end a frame left open by the input ("&&" ... "!!" without its CR LF):
+  // the good frame is the last one out.
   parser.feed("\r\n&&\r\n01081234.50\r\n!!\r\n", frames);
-  if (frames.size() != 1) std::abort();
-  const auto reading = decoder.decode(frames[0], t + 1);
+  if (frames.empty() || frames.size() > 2) std::abort();
+  const auto reading = decoder.decode(frames.back(), t + 1);
   if (!reading || reading->depth_m != 1234.5) std::abort();
   return 0;
 }
