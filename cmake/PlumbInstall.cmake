@@ -7,6 +7,11 @@
 #   include/plumb/       public headers: transport API, plugin facility, message types, estimator API
 #   share/plumb/idl/     the IDL files, for teams that generate their own code
 #   share/plumb/config/  DDS configuration files for applications that are not plumb
+#   share/plumb/params/  parameters files (--params-file), share/plumb/launch/ launch files
+#   share/plumb/systemd/env/  templates of /etc/plumb's environment files (the packages' postinst
+#                        copies the missing ones there)
+#   /lib/systemd/system/ the systemd units, when installing to /opt/plumb (the packages); into any
+#                        other prefix they go to PREFIX/lib/systemd/system, for inspection only
 #   share/doc/plumb/     README and docs/
 #
 # Components are the Debian packages of cmake/PlumbPackaging.cmake:
@@ -14,7 +19,8 @@
 #   cyclonedds, fastdds  one transport plugin each (their package depends on the vendor library)
 #   tool    plumb-bridge, plumb-sim (the tool computer, next to the sensors)
 #   surface plumb-estimator, plumb-calibrate, plumb-survey, plumb-display (its page is built into the
-#           executable: no web files to install), the estimator plugins (the surface computer)
+#           executable: no web files to install), plumb-wits and plumb-wits-send, the estimator
+#           plugins (the surface computer)
 #   dev     headers, CMake package, example sources and programs (other teams)
 include(CMakePackageConfigHelpers)
 
@@ -42,7 +48,8 @@ foreach(plugin ${plumb_estimator_plugins})
   install(TARGETS plumb_estimator_${plugin} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT surface)
 endforeach()
 install(TARGETS plumb_calibration plumb_station_list LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT surface)
-install(TARGETS plumb-estimator plumb-calibrate plumb-survey RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT surface)
+install(TARGETS plumb-estimator plumb-calibrate plumb-survey plumb-wits plumb-wits-send
+        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT surface)
 # The live display, built only where civetweb is installed (components/plumb-display/CMakeLists.txt).
 if(TARGET plumb-display)
   install(TARGETS plumb-display RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT surface)
@@ -52,6 +59,16 @@ endif()
 file(GLOB plumb_idl_install ${PROJECT_SOURCE_DIR}/idl/*.idl)
 install(FILES ${plumb_idl_install} DESTINATION ${PLUMB_INSTALL_DATADIR}/idl COMPONENT common)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/transports/config/ DESTINATION ${PLUMB_INSTALL_DATADIR}/config COMPONENT common)
+# Parameters and launch files; the build tree has them in the same place (build/share/plumb/...),
+# so that the README's commands read the same files from a build as from an installation.
+foreach(kind params launch)
+  file(GLOB plumb_${kind}_install CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/deploy/${kind}/*.yaml)
+  install(FILES ${plumb_${kind}_install} DESTINATION ${PLUMB_INSTALL_DATADIR}/${kind} COMPONENT common)
+  foreach(file ${plumb_${kind}_install})
+    get_filename_component(name ${file} NAME)
+    configure_file(${file} ${PROJECT_BINARY_DIR}/share/plumb/${kind}/${name} COPYONLY)
+  endforeach()
+endforeach()
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT common)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT common
         FILES_MATCHING PATTERN "*.md" PATTERN "*.xml")
@@ -84,3 +101,36 @@ foreach(example plumb-example-publisher plumb-example-subscriber plumb-c-attitud
     install(TARGETS ${example} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT dev)
   endif()
 endforeach()
+
+# systemd units and the templates of their environment files, per computer. The units name
+# /opt/plumb/bin: they belong where the packages install.
+set(plumb_env ${PROJECT_SOURCE_DIR}/deploy/systemd/env)
+set(plumb_units ${PROJECT_SOURCE_DIR}/deploy/systemd)
+install(FILES ${plumb_env}/plumb.env DESTINATION ${PLUMB_INSTALL_DATADIR}/systemd/env COMPONENT common)
+install(FILES ${plumb_env}/bridge-board.env DESTINATION ${PLUMB_INSTALL_DATADIR}/systemd/env COMPONENT tool)
+set(plumb_surface_units plumb-estimator.service plumb-survey.service plumb-wits.service)
+set(plumb_surface_env estimator.env survey.env wits.env)
+if(TARGET plumb-display)
+  list(APPEND plumb_surface_units plumb-display.service)
+  list(APPEND plumb_surface_env display.env)
+endif()
+list(TRANSFORM plumb_surface_env PREPEND ${plumb_env}/)
+install(FILES ${plumb_surface_env} DESTINATION ${PLUMB_INSTALL_DATADIR}/systemd/env COMPONENT surface)
+# plumb_install_units(COMPONENT UNIT...): decided at install time, since `cmake --install --prefix
+# DIR` and cpack run the same script (cpack with the prefix /opt/plumb and DESTDIR set).
+function(plumb_install_units component)
+  list(TRANSFORM ARGN PREPEND ${plumb_units}/ OUTPUT_VARIABLE files)
+  install(CODE "
+    if(CMAKE_INSTALL_PREFIX STREQUAL \"/opt/plumb\")
+      set(plumb_unit_dir /lib/systemd/system)
+    else()
+      set(plumb_unit_dir \"\${CMAKE_INSTALL_PREFIX}/lib/systemd/system\")
+    endif()
+    file(INSTALL DESTINATION \"\${plumb_unit_dir}\" TYPE FILE FILES ${files})
+  " COMPONENT ${component})
+endfunction()
+plumb_install_units(tool plumb-bridge@.service)
+plumb_install_units(surface ${plumb_surface_units})
+# For the packages' prerm (cmake/PlumbPackaging.cmake): what each one stops on removal.
+set(plumb_tool_stop_units "'plumb-bridge@*.service'")  # quoted: a pattern for systemctl, not the shell
+string(REPLACE ";" " " plumb_surface_stop_units "${plumb_surface_units}")

@@ -4,9 +4,11 @@
 #   plumb-common                libraries, `plumb` CLI, IDL, configuration files, docs
 #   plumb-transport-cyclonedds  Cyclone DDS transport plugin   (depends on libddsc0debian)
 #   plumb-transport-fastdds     Fast DDS transport plugin      (depends on libfastrtps2.9, libfastcdr1)
-#   plumb-tool                  tool computer: plumb-bridge, plumb-sim
+#   plumb-tool                  tool computer: plumb-bridge, plumb-sim, the plumb-bridge@ unit
 #   plumb-surface               surface computer: plumb-estimator, plumb-calibrate, plumb-survey,
-#                               plumb-display (depends on libcivetweb1), estimator plugins
+#                               plumb-display (depends on libcivetweb1), plumb-wits, estimator
+#                               plugins, their units
+#   (tool and surface make the plumb system user in postinst, and /etc/plumb's environment files)
 #   plumb-dev                   headers, CMake package, examples
 #
 # The vendor dependencies come from dpkg-shlibdeps (what the binaries really link), plumb's own
@@ -62,6 +64,21 @@ set(CPACK_COMPONENT_SURFACE_DESCRIPTION "plumb for the surface computer: estimat
 set(CPACK_DEBIAN_DEV_PACKAGE_NAME plumb-dev)
 set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS "plumb-common ${plumb_exact}, libeigen3-dev")
 set(CPACK_COMPONENT_DEV_DESCRIPTION "plumb headers and CMake package (find_package(plumb)), examples")
+# The systemd units' user (adduser in postinst), their environment files, stopping them on removal.
+foreach(package tool surface)
+  set(plumb_units "${plumb_${package}_stop_units}")
+  file(READ ${PROJECT_SOURCE_DIR}/deploy/debian/prerm.in prerm)
+  string(REPLACE "@plumb_units@" "${plumb_units}" prerm "${prerm}")
+  file(WRITE ${PROJECT_BINARY_DIR}/debian/${package}/prerm "${prerm}")
+  file(COPY ${PROJECT_SOURCE_DIR}/deploy/debian/postinst ${PROJECT_SOURCE_DIR}/deploy/debian/postrm
+       DESTINATION ${PROJECT_BINARY_DIR}/debian/${package})
+  file(CHMOD ${PROJECT_BINARY_DIR}/debian/${package}/prerm PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE
+       GROUP_READ GROUP_EXECUTE WORLD_READ WORLD_EXECUTE)
+  string(TOUPPER ${package} upper)
+  set(CPACK_DEBIAN_${upper}_PACKAGE_CONTROL_EXTRA
+      "${PROJECT_BINARY_DIR}/debian/${package}/postinst;${PROJECT_BINARY_DIR}/debian/${package}/prerm;${PROJECT_BINARY_DIR}/debian/${package}/postrm")
+  string(APPEND CPACK_DEBIAN_${upper}_PACKAGE_DEPENDS ", adduser")
+endforeach()
 # Both transports are wanted where both were built; either one is enough.
 string(REPLACE " | " ", " CPACK_DEBIAN_TOOL_PACKAGE_RECOMMENDS "${plumb_any_transport}")
 set(CPACK_DEBIAN_SURFACE_PACKAGE_RECOMMENDS "${CPACK_DEBIAN_TOOL_PACKAGE_RECOMMENDS}")

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   plumb::cli::add_status_verb(app, verbs);
   plumb::cli::add_config_verbs(app, verbs);
   plumb::cli::add_security_verbs(app, verbs);
+  plumb::cli::add_launch_verb(app, verbs);
   try {
     app.parse(argc, argv);
     return verbs.run_chosen(app);

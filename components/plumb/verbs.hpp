@@ -35,5 +35,6 @@ void add_survey_verb(CLI::App& app, Verbs& verbs);     // survey (offline: stati
 void add_status_verb(CLI::App& app, Verbs& verbs);     // status (components seen on the network)
 void add_config_verbs(CLI::App& app, Verbs& verbs);    // config check (DDS XML files for other applications)
 void add_security_verbs(CLI::App& app, Verbs& verbs);  // security create-keystore | create-identity | create-permissions | check
+void add_launch_verb(CLI::App& app, Verbs& verbs);     // launch (a set of plumb programs from a launch file)
 
 }  // namespace plumb::cli

@@ -16,7 +16,7 @@ mkdir -p "$build"
 cmake -S "$src" -B "$build" -DCMAKE_C_COMPILER="$cc" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DPLUMB_BUILD_FUZZERS=ON -DPLUMB_BUILD_TESTS=ON -DPLUMB_BUILD_BENCHMARKS=OFF > "$build/configure.log" 2>&1 ||
   { cat "$build/configure.log"; exit 1; }
-targets=(plumb_fuzz_frame_parser plumb_fuzz_csv_reader plumb_fuzz_mcap_reader)
+targets=(plumb_fuzz_frame_parser plumb_fuzz_csv_reader plumb_fuzz_mcap_reader plumb_fuzz_wits_parser)
 cmake --build "$build" -j2 --target "${targets[@]}"
 out=$build/fuzz-out
 mkdir -p "$out"

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "plumb/components/params_file.hpp"
 #include "plumb/core/number.hpp"
 #include "plumb/transport/security.hpp"
 
@@ -38,6 +39,25 @@ void add_param_option(CLI::App& app, std::vector<std::string>& params) {
   app.add_option("--param", params,
                  "plugin parameter [PLUGIN.]KEY=VALUE, repeatable: KEY=VALUE goes to every plugin that declares KEY, "
                  "PLUGIN.KEY=VALUE to that plugin only (see plumb plugins -v)");
+  // Defined after --param: CLI11 runs the callbacks in that order, so the file's entries go in
+  // front of the --param ones, which then replace them.
+  app.add_option_function<std::vector<std::string>>(
+         "--params-file",
+         [&params](const std::vector<std::string>& files) {
+           std::vector<std::string> from_files;
+           for (const auto& file : files) {
+             try {
+               const auto entries = read_params_file(file);
+               from_files.insert(from_files.end(), entries.begin(), entries.end());
+             } catch (const std::invalid_argument& e) {
+               throw CLI::ValidationError(e.what());
+             }
+           }
+           params.insert(params.begin(), from_files.begin(), from_files.end());
+         },
+         "YAML file of plugin parameters, repeatable: a plugin's name, then its KEY: VALUE lines indented "
+         "below it; read before --param, which overrides it (docs/estimators.md \"Parameters files\")")
+      ->type_name("FILE.yaml");
 }
 
 Connection connect(const TransportOptions& options, const std::string& participant_name) {

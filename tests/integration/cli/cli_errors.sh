@@ -6,14 +6,14 @@ bin=$1
 export PLUMB_DOMAIN_ID=$2
 . "$(dirname "$0")/../lib.sh"
 
-for exe in plumb plumb-sim plumb-estimator plumb-bridge plumb-calibrate plumb-survey; do
+for exe in plumb plumb-sim plumb-estimator plumb-bridge plumb-calibrate plumb-survey plumb-wits plumb-wits-send; do
   if [ -x "$bin/$exe" ]; then
     "$bin/$exe" --help > /dev/null 2>&1 && pass "$exe --help" || fail "$exe --help"
   else
     fail "$exe is not built"
   fi
 done
-for sub in "topic list" "topic echo" "topic hz" "topic pub" transports plugins estimate compare record play info export survey status; do
+for sub in "topic list" "topic echo" "topic hz" "topic pub" transports plugins estimate compare record play info export survey status launch; do
   "$bin/plumb" $sub --help > /dev/null 2>&1 && pass "plumb $sub --help" || fail "plumb $sub --help"
 done
 

@@ -33,6 +33,10 @@ expect_usage "C listener: bad PLUMB_DOMAIN_ID" "PLUMB_DOMAIN_ID" env PLUMB_DOMAI
 expect_usage "plumb-sim: --csv and --serial" "^plumb-sim: give --csv or --serial, not both" "$bin/plumb-sim" --csv "$work/x" --serial "$work/y"
 expect_usage "plumb-bridge: neither --device nor --replay" "^plumb-bridge: give either --device" "$bin/plumb-bridge"
 expect_usage "plumb topic pub: not FIELD=VALUE" "is not FIELD=VALUE" "$bin/plumb" topic pub plumb/attitude/x novalue --wait 0
+expect_usage "plumb-wits: no feed named" "^plumb-wits: say where the feed comes from" "$bin/plumb-wits"
+expect_usage "plumb-wits: a bad item code" "^plumb-wits: --bit-item: expected a WITS item code" "$bin/plumb-wits" --listen 5000 --bit-item 1x08
+expect_usage "plumb-wits-send: nowhere to send" "^plumb-wits-send: say where to send" "$bin/plumb-wits-send"
+expect_usage "plumb launch: a missing file" "^plumb launch: cannot read launch file '$work/none.yaml'" "$bin/plumb" launch "$work/none.yaml"
 rc=0
 "$bin/plumb" estimate --estimator static --input "$work/missing.csv" 2> /dev/null || rc=$?
 [ $rc -eq 1 ] && pass "a missing input file is a runtime error (exit 1)" || fail "missing input: exit $rc"

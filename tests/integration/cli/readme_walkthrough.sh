@@ -76,6 +76,11 @@ ls "$work"/plots/*.svg > /dev/null 2>&1 && pass "plumb compare wrote plots" || f
 head -1 "$work/capture.csv" 2>/dev/null | grep -qE '(^|,)t,fx,fy,fz,bx,by,bz(,|$)' &&
   pass "a sensor capture is a sensor CSV: $(head -1 "$work/capture.csv")" || fail "capture.csv header: $(head -1 "$work/capture.csv" 2>/dev/null)"
 [ -s "$work/coeffs.txt" ] && pass "calibration wrote coeffs.txt before the bridge read it" || fail "no coeffs.txt"
+grep -q '^\[launch\] sim ended (on_exit: shutdown)' "$work/log.txt" && grep -q '^\[survey\] ' "$work/log.txt" &&
+  grep -q '^\[display\] .*serving http://127.0.0.1:8080/' "$work/log.txt" &&
+  pass "plumb launch ran the one-machine chain, each line prefixed, the run's end stopping it" ||
+  fail "plumb launch: no prefixed chain in the log"
+[ -s "$work/nav-file.csv" ] && pass "plumb estimate with a parameters file wrote nav-file.csv" || fail "no nav-file.csv"
 grep -qE '^compensated .*inc ' "$work/log.txt" && grep -q 'plumb-estimator: .*compensated: 1 estimates' "$work/log.txt" &&
   pass "an estimate from the bridge's calibrated topic" || fail "no estimate from plumb/sensor/calibrated"
 [ -e "$work/board" ] && fail "plumb-sim left its pseudo-terminal link ./board" || pass "./board removed at the end"

@@ -8,11 +8,13 @@
 # The sensor noise parameters are read off the recording's first still second (gyro 0.2-0.4 deg/s
 # and accelerometer 0.003 g per sample at 400 Hz: ARW about 1 deg/sqrt(h), VRW 0.1 m/s/sqrt(h);
 # gyro biases up to 0.4 deg/s), the GLRT threshold is OpenShoe's (3e4 at 0.01 m/s^2 and
-# 0.1 deg/s) scaled to those sigmas. None of it is fitted to the loop closure.
-# usage: walk_recording.sh BIN_DIR DATA_DIR
+# 0.1 deg/s) scaled to those sigmas. None of it is fitted to the loop closure. They are the shipped
+# parameters file deploy/params/foot-mems.yaml, passed as a user passes it (--params-file).
+# usage: walk_recording.sh BIN_DIR DATA_DIR PARAMS_FILE
 set -uo pipefail
 bin=$1
 data=$2
+params_file=$3
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../lib.sh"
 work=$(mktemp -d)
@@ -27,11 +29,7 @@ for case in "short_walk 0.082" "long_walk 0.421"; do
     --column "t=Time (s)" --column "wx=Gyroscope X (deg/s)" --column "wy=Gyroscope Y (deg/s)" \
     --column "wz=Gyroscope Z (deg/s)" --column "fx=Accelerometer X (g)" --column "fy=Accelerometer Y (g)" \
     --column "fz=Accelerometer Z (g)" --units accel=g,gyro=deg/s --axes x,-y,-z \
-    --param gravity=9.80665 --param initial_azimuth_deg=0 --param align_s=1 --param output_rate_hz=10 \
-    --param lateral_velocity_update=0 --param min_still_s=0.05 --param still_hysteresis=1 \
-    --param glrt_threshold=3000 --param still_gyro_tol_dph=360000 --param still_accel_drift_tol=5 \
-    --param gyro_arw_deg_rt_h=1 --param accel_vrw_mps_rt_h=0.1 --param gyro_bias_dph=2000 \
-    --param accel_bias_mg=30 --param zupt_sd_mps=0.01 > "$work/$name.out" 2>&1 ||
+    --params-file "$params_file" > "$work/$name.out" 2>&1 ||
     { cat "$work/$name.out"; fail "plumb estimate $name"; continue; }
   if output_matches "$repeated repeated_time" cat "$work/$name.out"; then
     pass "$name: all $repeated repeated rows counted"

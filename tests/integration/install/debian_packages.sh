@@ -4,6 +4,9 @@
 # the plumb-* packages it depends on) unpacked into an empty folder and run from there: plumb-sim
 # writes a recording, plumb-bridge replays it onto DDS, `plumb topic echo` reads it back. Also: a
 # vendor library missing at run time is one line naming it and its Debian package.
+# The systemd units: every unit verified by systemd-analyze against the unpacked packages, the
+# maintainer scripts parsed, and the shipped environment files run as systemd runs them (no systemd
+# runs in a container: systemd_exec.py reads EnvironmentFile= and ExecStart= as it does).
 # usage: debian_packages.sh BUILD_DIR DOMAIN
 set -uo pipefail
 build=$1
@@ -30,11 +33,16 @@ contains() {  # contains PACKAGE PATH...: every PATH is in the package
   dpkg-deb -c "$(deb "$p")" > "$work/$p.list"
   for f in "$@"; do grep -q " \./opt/plumb/$f\$" "$work/$p.list" || fail "$p lacks $f"; done
 }
-contains plumb-tool bin/plumb-bridge bin/plumb-sim
+contains plumb-tool bin/plumb-bridge bin/plumb-sim share/plumb/systemd/env/bridge-board.env
 contains plumb-surface bin/plumb-estimator bin/plumb-calibrate lib/libplumb_estimator_compensated.so \
-  lib/libplumb_estimator_strapdown.so
+  lib/libplumb_estimator_strapdown.so bin/plumb-wits bin/plumb-wits-send share/plumb/systemd/env/wits.env
+for unit in plumb-estimator plumb-survey plumb-wits; do
+  grep -q " \./lib/systemd/system/$unit\.service\$" "$work/plumb-surface.list" || fail "plumb-surface lacks $unit.service"
+done
+grep -q " \./lib/systemd/system/plumb-bridge@\.service\$" "$work/plumb-tool.list" || fail "plumb-tool lacks plumb-bridge@.service"
 if [ -x "$build/bin/plumb-display" ]; then contains plumb-surface bin/plumb-display; fi  # built where civetweb is
 contains plumb-common bin/plumb lib/libplumb_plugin.so lib/libplumb_transport.so share/plumb/idl/attitude.idl \
+  share/plumb/params/drilling-mems.yaml share/plumb/launch/one-machine.yaml share/plumb/systemd/env/plumb.env \
   share/plumb/config/fastdds-loopback.xml share/plumb/config/cyclonedds-loopback.xml share/doc/plumb/README.md
 contains plumb-transport-cyclonedds lib/libplumb_transport_cyclonedds.so
 contains plumb-transport-fastdds lib/libplumb_transport_fastdds.so
@@ -92,4 +100,65 @@ if [ -n "$fastrtps" ] && [ -e "$root/opt/plumb/lib/libplumb_transport_fastdds.so
   expect_error "missing libfastrtps names it and its package" "libfastrtps\.so\.2\.9.*Debian package libfastrtps2\.9" \
     unshare -m sh -c "mount --bind /dev/null '$fastrtps' && exec env PATH='$bin:/usr/bin:/bin' plumb topic list --transport fastdds"
 fi
+
+# The surface computer's packages beside the tool's: the units of both, verified by systemd against
+# what the packages installed (its own targets copied beside them, so that nothing else is missing).
+dpkg-deb -x "$(deb plumb-surface)" "$root" || fail "dpkg-deb -x plumb-surface"
+units=$(cd "$root" && ls lib/systemd/system/plumb-*.service)
+echo "units: $(echo $units)"
+if command -v systemd-analyze > /dev/null; then
+  cp -n /lib/systemd/system/*.target "$root/lib/systemd/system/" 2>/dev/null
+  for unit in $units; do
+    out=$(systemd-analyze verify --man=no --root="$root" "/$unit" 2>&1); rc=$?
+    [ $rc -eq 0 ] && [ -z "$out" ] && pass "systemd-analyze verify $unit: clean" || fail "verify $unit (exit $rc): $out"
+  done
+  for unit in $units; do
+    grep -q "^Restart=on-failure$" "$root/$unit" && grep -q "^User=plumb$" "$root/$unit" && grep -q "^NoNewPrivileges=yes$" "$root/$unit" &&
+      grep -q "^ProtectSystem=strict$" "$root/$unit" && grep -q "^EnvironmentFile=/etc/plumb/plumb.env$" "$root/$unit" ||
+      fail "$unit lacks the restart policy, its user, the hardening or the environment file"
+  done
+  exposure=$(systemd-analyze security --offline=yes --root="$root" "/lib/systemd/system/plumb-estimator.service" 2>&1 | tail -1)
+  echo "systemd-analyze security: $exposure"
+else
+  fail "systemd-analyze not found (systemd: .ci/install-deps installs it)"
+fi
+for package in plumb-tool plumb-surface; do
+  mkdir -p "$work/control-$package" && dpkg-deb -e "$(deb $package)" "$work/control-$package"
+  for script in postinst prerm postrm; do
+    sh -n "$work/control-$package/$script" 2> "$work/sh.err" || fail "$package $script: $(cat "$work/sh.err")"
+  done
+  grep -q "adduser --system --group" "$work/control-$package/postinst" && pass "$package makes the plumb user in postinst" ||
+    fail "$package postinst makes no user"
+done
+field_has "plumb-tool depends on adduser (postinst)" plumb-tool "(^|, )adduser( |,|$)"
+grep -q "plumb-bridge@\*\.service" "$work/control-plumb-tool/prerm" && pass "plumb-tool's prerm stops its bridge instances" ||
+  fail "plumb-tool prerm: $(cat "$work/control-plumb-tool/prerm")"
+
+# The shipped environment files, as an administrator sets them (/etc/plumb from the templates, the
+# domain edited in plumb.env), run through the units as systemd would.
+mkdir -p "$root/etc/plumb"
+cp "$root"/opt/plumb/share/plumb/systemd/env/*.env "$root/etc/plumb/"
+sed -i "s/^PLUMB_DOMAIN_ID=.*/PLUMB_DOMAIN_ID=$PLUMB_DOMAIN_ID/" "$root/etc/plumb/plumb.env"
+unit_run() { env -i python3 "$here/systemd_exec.py" "$root" "$root/lib/systemd/system/$1" > "$work/$1.log" 2>&1 & }
+unit_run plumb-estimator.service; estimator_pid=$!; pids+=($estimator_pid)
+unit_run plumb-wits.service; wits_pid=$!; pids+=($wits_pid)
+run plumb status --wait 8 --domain "$PLUMB_DOMAIN_ID" > "$work/status.txt" 2>&1
+grep -q "plumb-estimator" "$work/status.txt" && grep -q "plumb-wits/board" "$work/status.txt" &&
+  pass "plumb-estimator and plumb-wits from their units' environment files, on plumb.env's domain" ||
+  fail "plumb status: $(cat "$work/status.txt") estimator: $(cat "$work/plumb-estimator.service.log") wits: $(cat "$work/plumb-wits.service.log")"
+run plumb topic echo plumb/depth --count 3 --timeout 30 --domain "$PLUMB_DOMAIN_ID" > "$work/depth.txt" 2>&1 &
+echo_pid=$!; pids+=($echo_pid)
+sleep 1
+run plumb-wits-send --connect 127.0.0.1:5000 --count 3 --interval 0.2 > "$work/send.log" 2>&1 || fail "plumb-wits-send"
+wait $echo_pid && [ "$(grep -c 'depth_m: 1000' "$work/depth.txt")" -eq 3 ] &&
+  pass "wits.env's --listen 5000: three depths from a rig on plumb/depth" || fail "depth echo: $(cat "$work/depth.txt")"
+# systemctl stop: SIGTERM. plumb-wits ends with 0; the estimator host, which never got a sample
+# here, ends saying so with status 1 (a run that received nothing is not a success).
+kill -TERM $estimator_pid $wits_pid
+wait $wits_pid && pass "plumb-wits stops on SIGTERM (systemctl stop), exit status 0" ||
+  fail "plumb-wits on SIGTERM: $(tail -n 3 "$work/plumb-wits.service.log")"
+wait $estimator_pid; rc=$?
+[ $rc -le 1 ] && grep -q "no sample received on plumb/sensor/calibrated" "$work/plumb-estimator.service.log" &&
+  pass "plumb-estimator stops on SIGTERM, saying it received nothing (exit status $rc)" ||
+  fail "plumb-estimator on SIGTERM: exit $rc, $(tail -n 3 "$work/plumb-estimator.service.log")"
 finish

@@ -8,15 +8,23 @@ bool declares_parameter(const Info& info, const std::string& name) {
   return false;
 }
 
+std::string with_origin(const std::string& origin, const std::string& assignment) {
+  return origin + kOriginSeparator + assignment;
+}
+
 std::vector<Parameters> assign_parameters(const std::vector<Info>& estimators, const std::vector<std::string>& assignments,
                                           std::optional<double> window_s) {
   std::vector<Parameters> out(estimators.size());
   for (std::size_t i = 0; i < estimators.size(); ++i) {
     if (window_s && declares_parameter(estimators[i], "window")) out[i]["window"] = std::to_string(*window_s);
   }
-  for (const auto& kv : assignments) {
+  for (const auto& written : assignments) {
+    // Messages start with where the assignment was written: "--param 'a=1'" or "FILE:LINE".
+    const auto separator = written.find(kOriginSeparator);
+    const std::string kv = separator == std::string::npos ? written : written.substr(separator + 1);
+    const std::string where = separator == std::string::npos ? "--param '" + kv + "'" : written.substr(0, separator);
     const auto eq = kv.find('=');
-    if (eq == std::string::npos || eq == 0) throw ParameterError("--param '" + kv + "' is not [PLUGIN.]KEY=VALUE");
+    if (eq == std::string::npos || eq == 0) throw ParameterError(where + " is not [PLUGIN.]KEY=VALUE");
     std::string key = kv.substr(0, eq);
     std::string only;  // PLUGIN.KEY: that plugin alone
     if (const auto dot = key.find('.'); dot != std::string::npos) {
@@ -24,7 +32,7 @@ std::vector<Parameters> assign_parameters(const std::vector<Info>& estimators, c
       key = key.substr(dot + 1);
       bool selected = false;
       for (const auto& info : estimators) selected = selected || info.name == only;
-      if (!selected) throw ParameterError("--param '" + kv + "': estimator '" + only + "' is not selected");
+      if (!selected) throw ParameterError(where + ": estimator '" + only + "' is not selected");
     }
     bool used = false;
     for (std::size_t i = 0; i < estimators.size(); ++i) {
@@ -33,8 +41,9 @@ std::vector<Parameters> assign_parameters(const std::vector<Info>& estimators, c
       used = true;
     }
     if (!used)
-      throw ParameterError("--param '" + key + "': " + (only.empty() ? "no selected estimator has" : only + " has no") +
-                           " that parameter (see plumb plugins -v)");
+      throw ParameterError((separator == std::string::npos ? "--param '" + key + "'" : where + ": '" + key + "'") + ": " +
+                           (only.empty() ? "no selected estimator has that parameter" : only + " has no such parameter") +
+                           " (see plumb plugins -v)");
   }
   return out;
 }

@@ -24,8 +24,9 @@ struct TransportOptions {
 void add_transport_options(CLI::App& app, TransportOptions& options);
 
 // --param [PLUGIN.]KEY=VALUE, the one parameter grammar of plumb estimate, plumb compare and
-// plumb-estimator (estimators/plugins/api assignments.hpp does the parsing). No short form: -p is --plugin
-// on plumb-estimator.
+// plumb-estimator (estimators/plugins/api assignments.hpp does the parsing). No short form: -p is
+// --plugin on plumb-estimator. Also --params-file FILE.yaml (params_file.hpp), whose entries go
+// into `params` before those of --param, so that a --param overrides the file.
 void add_param_option(CLI::App& app, std::vector<std::string>& params);
 
 // A loaded transport and a participant on it; keeps the transport alive as long as it lives.

@@ -13,8 +13,15 @@ namespace plumb::estimator {
 
 bool declares_parameter(const Info& info, const std::string& name);
 
-// One Parameters per estimator, in order. Throws ParameterError for an assignment that is not
-// [PLUGIN.]KEY=VALUE or whose KEY no (such) estimator declares (a typo must not pass silently).
+// An assignment may say where it was written, for the messages about it: ORIGIN, the separator,
+// then [PLUGIN.]KEY=VALUE (a parameters file's entries carry "FILE:LINE"). A message about such an
+// assignment starts with its origin instead of quoting a --param.
+inline constexpr char kOriginSeparator = '\x1f';
+std::string with_origin(const std::string& origin, const std::string& assignment);
+
+// One Parameters per estimator, in order; a later assignment of a key replaces an earlier one.
+// Throws ParameterError for an assignment that is not [PLUGIN.]KEY=VALUE or whose KEY no (such)
+// estimator declares (a typo must not pass silently).
 std::vector<Parameters> assign_parameters(const std::vector<Info>& estimators, const std::vector<std::string>& assignments,
                                           std::optional<double> window_s);
 

@@ -1,0 +1,44 @@
+#!/usr/bin/env python3
+"""Runs a systemd unit's ExecStart as systemd would, without systemd: the EnvironmentFile= files
+(read as systemd reads them: KEY=VALUE lines, '#' comments, quotes removed), %i replaced by the
+instance, $VAR and ${VAR} words replaced by their value split into words, and the program started
+with that environment. Paths of the unit (the environment files, the program) are taken inside ROOT,
+where the packages were unpacked. For the package test, where no systemd runs.
+usage: systemd_exec.py ROOT UNIT_FILE [INSTANCE]
+"""
+import os
+import re
+import shlex
+import sys
+
+root, unit = sys.argv[1], sys.argv[2]
+instance = sys.argv[3] if len(sys.argv) > 3 else ""
+env = {"PATH": "/usr/bin:/bin"}
+exec_start = None
+for line in open(unit):
+    line = line.strip().replace("%i", instance)
+    if line.startswith("EnvironmentFile="):
+        path = line.split("=", 1)[1]
+        optional = path.startswith("-")
+        path = root + path.lstrip("-")
+        if not os.path.exists(path):
+            if optional:
+                continue
+            sys.exit(f"{unit}: environment file {path} is missing")
+        for text in open(path):
+            text = text.strip()
+            if not text or text.startswith("#"):
+                continue
+            key, value = text.split("=", 1)
+            env[key.strip()] = " ".join(shlex.split(value)) if value.strip() else ""
+    elif line.startswith("ExecStart="):
+        exec_start = line.split("=", 1)[1]
+if exec_start is None:
+    sys.exit(f"{unit}: no ExecStart")
+argv = []
+for word in exec_start.split():
+    match = re.fullmatch(r"\$\{?(\w+)\}?", word)
+    argv += env.get(match.group(1), "").split() if match else [word]
+argv[0] = root + argv[0]
+print("systemd_exec: " + " ".join(shlex.quote(a) for a in argv), flush=True)
+os.execve(argv[0], argv, env)

@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# plumb launch's policies, on plumb-wits-send (no DDS: waits for a reader for ever, or fails at
+# once on a bad option). A program with restart: on-failure is killed with SIGKILL and comes back
+# as a new process, each time, until its limit; then it has failed for good: plumb launch stops the
+# others and exits 1. A program with restart: never that fails stops the launch at once, exit 1.
+# SIGINT (Ctrl-C) and SIGTERM stop every program: exit 0, no process left.
+# usage: launch_restart.sh BIN_DIR
+set -uo pipefail
+bin=$1
+here=$(cd "$(dirname "$0")" && pwd)
+. "$here/../lib.sh"
+. "$here/../wait.sh"
+start_work_with_programs
+export PATH=$bin:$PATH
+free_port() { python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'; }
+pid_of() { sed -nE "s/^\[launch\] started $1 \(pid ([0-9]+)\).*/\1/p" "$2" | tail -1; }
+alive() { kill -0 "$1" 2>/dev/null; }
+
+cat > "$work/restart.yaml" <<YAML
+launch:
+  - name: rig
+    cmd: plumb-wits-send --listen $(free_port)
+    restart: on-failure
+    restart_limit: 2
+    restart_delay: 0.2
+  - name: other
+    cmd: [plumb-wits-send, --listen, "$(free_port)"]
+YAML
+plumb launch "$work/restart.yaml" > "$work/out.txt" 2>&1 &
+launch=$!; pids+=($launch)
+wait_for "$work/out.txt" "^\[rig\] plumb-wits-send: waiting for a WITS reader" 10 &&
+  wait_for "$work/out.txt" "^\[other\] plumb-wits-send: waiting for a WITS reader" 10 &&
+  pass "both started, each line prefixed with its name" || { cat "$work/out.txt"; fail "no prefixed output"; finish; }
+first=$(pid_of rig "$work/out.txt")
+other=$(pid_of other "$work/out.txt")
+for n in 1 2; do
+  before=$(pid_of rig "$work/out.txt")
+  kill -9 "$before"
+  if wait_for "$work/out.txt" "^\[launch\] rig failed \(killed by SIGKILL\); restart $n of 2" 5 &&
+     wait_for "$work/out.txt" "^\[launch\] started rig \(pid [0-9]+\)" 5 && sleep 0.5 &&
+     now=$(pid_of rig "$work/out.txt") && [ "$now" != "$before" ] && alive "$now"; then
+    pass "kill -9 of rig: restarted as pid $now (restart $n of 2)"
+  else
+    cat "$work/out.txt"; fail "kill -9 of rig ($n): no restart"
+  fi
+done
+alive "$other" && pass "the other program kept running" || fail "the other program is gone"
+kill -9 "$(pid_of rig "$work/out.txt")"
+wait "$launch"; rc=$?
+[ $rc -eq 1 ] && grep -q "^\[launch\] rig failed (killed by SIGKILL) after 2 restarts: stopping the others" "$work/out.txt" &&
+  pass "the third kill: failed for good, exit status 1" || { cat "$work/out.txt"; fail "after the limit: exit $rc"; }
+! alive "$other" && ! alive "$first" && grep -q "^\[launch\] other ended" "$work/out.txt" &&
+  pass "the others were stopped" || fail "a program outlived plumb launch"
+
+# restart: never, and a program that fails at once.
+printf 'launch:\n  - cmd: plumb-wits-send --listen %s\n  - name: bad\n    cmd: plumb-wits-send --bogus\n' "$(free_port)" > "$work/never.yaml"
+timeout 30 plumb launch "$work/never.yaml" > "$work/never.txt" 2>&1; rc=$?
+[ $rc -eq 1 ] && grep -q "^\[bad\] plumb-wits-send: .*bogus" "$work/never.txt" &&
+  grep -q "^\[launch\] bad failed (exit status 2; restart: never): stopping the others" "$work/never.txt" &&
+  pass "restart: never: the failure stops the launch, exit status 1" || { cat "$work/never.txt"; fail "restart: never: exit $rc"; }
+
+# Ctrl-C and SIGTERM stop everything, exit status 0.
+for sig in INT TERM; do
+  plumb launch "$work/restart.yaml" > "$work/stop.txt" 2>&1 &
+  launch=$!; pids+=($launch)
+  wait_for "$work/stop.txt" "^\[other\] plumb-wits-send: waiting" 10 || { cat "$work/stop.txt"; fail "SIG$sig: no start"; continue; }
+  children="$(pid_of rig "$work/stop.txt") $(pid_of other "$work/stop.txt")"
+  kill -s "$sig" "$launch"
+  wait "$launch"; rc=$?
+  left=""
+  for c in $children; do alive "$c" && left="$left $c"; done
+  [ $rc -eq 0 ] && [ -z "$left" ] && pass "SIG$sig: every program stopped, exit status 0" ||
+    { cat "$work/stop.txt"; fail "SIG$sig: exit $rc, still running:$left"; }
+done
+
+sed 's/restart_delay/restrat/' "$work/restart.yaml" > "$work/typo.yaml"
+expect_usage "a launch file with an unknown key" "typo\.yaml:6: unknown key 'restrat'" plumb launch "$work/typo.yaml"
+printf 'launch:\n  - cmd: plumb-nothing --x\n' > "$work/missing.yaml"
+expect_usage "a program that does not exist" "missing\.yaml:2: program 'plumb-nothing' not found" plumb launch "$work/missing.yaml"
+finish
