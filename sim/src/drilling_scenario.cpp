@@ -72,6 +72,8 @@ namespace detail {
 void validate(const DrillingScenario& s, std::size_t stop_count) {
   validate_imu_site(s, require);
   require(finite_nonneg(s.magnetometer.sigma_uT), "magnetometer noise must be finite and >= 0 uT");
+  require(finite_nonneg(s.magnetometer.axial_bias_sd_uT), "magnetometer axial bias spread must be finite and >= 0 uT");
+  require(!s.magnetometer.axial_bias_uT || std::isfinite(*s.magnetometer.axial_bias_uT), "magnetometer axial bias must be finite");
   for (const auto& d : s.magnetometer.disturbances) {
     require(d.stop_index < stop_count, "magnetic disturbance at stop " + std::to_string(d.stop_index) +
                                            " but the plan has " + std::to_string(stop_count) + " stop(s) (0-based)");

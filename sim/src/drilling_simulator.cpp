@@ -19,6 +19,7 @@ namespace {
 // Separate streams per purpose so that adding vibration or changing a bias does not change the
 // noise sequence of the others.
 constexpr std::uint64_t kVibrationStream = 0x9e3779b97f4a7c15ULL;
+constexpr std::uint64_t kMagnetizationStream = 0xbf58476d1ce4e5b9ULL;
 
 }  // namespace
 
@@ -40,6 +41,10 @@ DrillingSimulator::DrillingSimulator(const DrillingScenario& scenario)
       vib_phase_[axis][k] = 2.0 * kPi * unit(vib_rng_);
     }
   vib_amplitude_ = v.lateral_rms * std::sqrt(2.0 / kVibrationTones);
+  // Drawn from a stream of its own: the other noises stay what they were for the seed.
+  std::mt19937_64 magnetization_rng(scenario_.seed ^ kMagnetizationStream);
+  axial_bias_uT_ = scenario_.magnetometer.axial_bias_uT.value_or(
+      scenario_.magnetometer.axial_bias_sd_uT * std::normal_distribution<double>(0.0, 1.0)(magnetization_rng));
   next_shock_ = v.shock_rate_hz > 0 && v.shock_peak != 0
                     ? std::exponential_distribution<double>(v.shock_rate_hz)(vib_rng_)
                     : std::numeric_limits<double>::infinity();
@@ -83,7 +88,9 @@ Sample DrillingSimulator::next(TruthSample* truth) {
   out.seq = index_;
   out.t = t;
   imu_.measure(st.w_nb, st.c_nb, st.acceleration, st.velocity, scenario_.g, vibration, n_w, n_a, out);
-  if (scenario_.magnetometer.present) out.b = field_at(st) + scenario_.magnetometer.sigma_uT * n_m;
+  if (scenario_.magnetometer.present) {
+    out.b = field_at(st) + scenario_.magnetometer.sigma_uT * n_m + Eigen::Vector3d(0.0, 0.0, axial_bias_uT_);
+  }
   if (scenario_.depth.present) {
     double depth = st.depth_m + scenario_.depth.sigma_m * n_d;
     const double q = scenario_.depth.quantum_m;

@@ -83,10 +83,12 @@ std::vector<DrillingRunResult> run_drilling_compare(const DrillingCompareConfig&
           r.drilled_m = simulator.trajectory().drilled_length_m();
           Sums sums;
           const auto sink = [&](const estimator::Runner::Slot&, Estimate& e) { score(e, simulator.trajectory(), r, sums); };
-          // What the operator of a real run knows: the site's latitude and gravity, and the tool's
-          // IMU grade. The user's own --param come last and win.
-          std::vector<std::string> assignments{"latitude_deg=" + std::to_string(scenario.latitude_deg),
-                                               "gravity=" + std::to_string(scenario.g), "imu_grade=" + grade};
+          // What the operator of a real run knows: the site's latitude and gravity, the tool's
+          // IMU grade and how magnetic the string is (the spread the simulator draws it from). The
+          // user's own --param come last and win.
+          std::vector<std::string> assignments{
+              "latitude_deg=" + std::to_string(scenario.latitude_deg), "gravity=" + std::to_string(scenario.g),
+              "imu_grade=" + grade, "mag_axial_bias_uT=" + std::to_string(scenario.magnetometer.axial_bias_sd_uT)};
           assignments.insert(assignments.end(), config.assignments.begin(), config.assignments.end());
           runner.configure(assignments, std::nullopt);
           std::vector<Sample> chunk;

@@ -61,6 +61,9 @@ Measurement<1> magnetic_heading(const NavState& x, const Eigen::Vector3d& mean_b
   m.r[0] = std::atan2(b.y(), b.x());
   const Eigen::RowVector3d d(-b.z() / bh, 0.0, 1.0);
   m.h.block<1, 3>(0, kAtt) = d * turn;
+  // An axial bias error dm adds -dm C e_z to the field in the navigation frame: its east part turns
+  // the heading by that over Bh.
+  m.h(0, kMagAxial) = -(turn * (x.q * Eigen::Vector3d::UnitZ())).y() / bh;
   m.noise(0, 0) = sd_heading * sd_heading;
   return m;
 }

@@ -32,6 +32,15 @@ inline Eigen::Quaterniond rotation_quaternion(const Eigen::Vector3d& phi) {
 
 }  // namespace
 
+Eigen::Vector3d mean_to_instant(const Eigen::Vector3d& mean_f, const Eigen::Vector3d& w, double dt) {
+  const double theta = w.norm() * dt;
+  if (theta < 1e-3) return mean_f;
+  const Eigen::Vector3d u = w / w.norm();
+  const Eigen::Vector3d along = u * u.dot(mean_f);
+  const double half = 0.5 * theta;
+  return along + (mean_f - along) * (half / std::sin(half));
+}
+
 Mechanization::Mechanization(const Eigen::Vector3d& w_ie_n, double g) : w_ie_(w_ie_n), g_n_(0.0, 0.0, g) {}
 
 void Mechanization::begin(const NavState& state) {
@@ -49,6 +58,7 @@ void Mechanization::begin(const NavState& state) {
   s_sum_ = 0;
   c_int_.setZero();
   axis_cross_v_int_.setZero();
+  spin_int_.setZero();
   lever_int_.setZero();
   last_lever_.setZero();
   stepped_ = false;
@@ -119,6 +129,7 @@ void Mechanization::step(const ImuReading& a, const ImuReading& b, const ImuRead
   // The filter's integrals, by the trapezoid.
   c_int_ += (0.5 * dt) * (c_ + c1);
   axis_cross_v_int_ += 0.5 * dt * (axa + axb);
+  spin_int_ += (0.5 * dt) * (a.w.z() * c_.col(2) + b.w.z() * c1.col(2));
   if (lever_model_) {
     // C~ L(w) at b is the next step's value at a.
     const auto turning = [](const Eigen::Vector3d& w) { return w.squaredNorm() > kTurningRate2; };
@@ -161,6 +172,7 @@ void Mechanization::finish(NavState& state, StepIntegrals* integrals) {
     integrals->f_n += c0_ * u_;
     integrals->axis_n += c_bn.col(2);
     integrals->axis_cross_v += c0_ * axis_cross_v_int_;
+    integrals->spin_axis += c0_ * spin_int_;
     if (lever_model_) integrals->c_lever += c0_ * lever_int_;
   }
 }

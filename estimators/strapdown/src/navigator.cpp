@@ -69,7 +69,7 @@ void Navigator::reset() {
        {"samples", "accepted", "non_finite", "time_backwards", "repeated_time", "no_gyro", "gyro_saturated",
         "accel_saturated", "mag_unusable", "out_of_range", "gaps", "accel_in_g", "still_periods",
         "zero_velocity_updates", "zero_rate_updates", "tilt_updates", "azimuth_updates", "disturbed_field",
-        "lateral_velocity_updates", "depth_updates", "rows", "invalid_rows"}) {
+        "lateral_velocity_updates", "depth_updates", "tally_updates", "rows", "invalid_rows"}) {
     counters_[name] = 0;
   }
   // Map nodes stay where they are: the per-sample counters are bumped through pointers, not looked up.
@@ -98,6 +98,8 @@ void Navigator::reset() {
   bg_.setZero();
   ba_.setZero();
   lever_.setZero();
+  gyro_scale_ = 0;
+  mag_axial_ = 0;
   lever_model_ = false;
   kf_ = ErrorStateFilter();
   noise_.gyro_arw = config_.gyro_arw;
@@ -145,6 +147,8 @@ void Navigator::reset() {
   latest_depth_.reset();
   latest_depth_t_ = last_depth_row_t_ = 0;
   zupt_periods_ = 0;
+  tally_stops_ = 0;
+  tally_distance_ = 0;
   last_field_warning_.clear();
   gap_warning_until_ = -1;
   next_output_t_ = 0;
@@ -286,7 +290,9 @@ void Navigator::shift_gyro(Input in, std::vector<Estimate>& out) {
 // acceleration of the accelerometers' offset from the tool axis.
 ImuReading Navigator::reading(const Input& in) const {
   ImuReading r{in.t, in.f - ba_, in.w - bg_};
+  r.w.z() /= 1.0 + gyro_scale_;
   if (lever_model_ && r.w.squaredNorm() > kTurningRate2) r.f.noalias() -= centripetal_matrix(r.w) * lever_;
+  if (config_.samples_are_means && dt_nominal_ > 0) r.f = mean_to_instant(r.f, r.w, dt_nominal_);
   return r;
 }
 
@@ -630,6 +636,7 @@ void Navigator::align(const Input& in) {
   bg_.setZero();
   ba_.setZero();
   lever_.setZero();
+  gyro_scale_ = 0;
   StateMatrix p0 = StateMatrix::Zero();
   const double tilt_sd = 2.0 * deg;
   p0.block<3, 3>(kAtt, kAtt).diagonal() << tilt_sd * tilt_sd, tilt_sd * tilt_sd, heading_sd * heading_sd;
@@ -639,6 +646,9 @@ void Navigator::align(const Input& in) {
   p0.block<3, 3>(kAccelBias, kAccelBias).diagonal().setConstant(config_.accel_bias_sd * config_.accel_bias_sd);
   p0(kDistance, kDistance) = depth_sd_ * depth_sd_;
   if (lever_model_) p0.block<2, 2>(kLever, kLever).diagonal().setConstant(config_.lever_arm_sd * config_.lever_arm_sd);
+  p0(kGyroScale, kGyroScale) = config_.gyro_scale_sd * config_.gyro_scale_sd;
+  // A drilling string's magnetization is along its axis; a foot or a hand has no such axis.
+  if (use_mag_ && config_.lateral_velocity_update) p0(kMagAxial, kMagAxial) = config_.mag_axial_bias_sd * config_.mag_axial_bias_sd;
   const double n = stats.count();
   const double dt = dt_nominal_ > 0 ? dt_nominal_ : 0.01;
   adopt_measured_noise(dt);
@@ -663,6 +673,8 @@ void Navigator::align(const Input& in) {
   // From now on the detector sees w less the expected earth rate and bias: its long means restart.
   detector_.restart_stretch();
   aligned_at_ = in.t;
+  // The still period of the alignment is the tally's stop 0, not a connection.
+  stop_started_t_ = std::numeric_limits<double>::infinity();
   last_epoch_t_ = in.t;
   correction_.setZero();
 
@@ -702,7 +714,7 @@ void Navigator::align(const Input& in) {
 }
 
 void Navigator::apply(const StateVector& dx) {
-  feed_back(dx, x_, bg_, ba_, &lever_);
+  feed_back(dx, x_, bg_, ba_, &lever_, &gyro_scale_, &mag_axial_);
   correction_ += dx;
   g_ -= dx[kGravity];
   mech_.set_gravity(g_);
@@ -726,12 +738,20 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
     count("zero_velocity_updates");
     still_updates(false);
   } else {
-    if (still_state_.ended) still_updates(true);
+    if (still_state_.ended) {
+      still_updates(true);
+      late_stop_end();
+    }
     if (config_.lateral_velocity_update) {
       const Measurement<2> m = lateral_velocity(x_, config_.nhc_sd);
       apply(kf_.update(m.r, m.h, m.noise));
       count("lateral_velocity_updates");
     }
+  }
+  if (still_state_.started) stop_started_t_ = in.t;
+  if (still_state_.still && in.t - stop_started_t_ >= config_.pipe_connection_s) {
+    tally_update();
+    stop_started_t_ = std::numeric_limits<double>::infinity();  // once per stop
   }
   if (latest_depth_ && have_depth0_ && in.t - last_depth_update_t_ >= config_.depth_interval_s - 0.5 * dt_nominal_) {
     // A report's age: the time since the last row that carried depth (depth only at connections,
@@ -753,6 +773,28 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   watch_for_stops(in.t);
   if (config_.smooth) smoother_.store(phi, dt, correction_, x_, bg_, ba_, kf_.covariance());
   emit(in.t, out);
+}
+
+// A still period's end is seen late when the string speeds up slowly (its acceleration under the
+// accelerometer noise): the zero-velocity updates held the velocity at zero while the tool already
+// moved along its axis, at up to the rate of penetration. Said to the filter as velocity
+// uncertainty along the axis at the end; depth, where there is some, takes it back out.
+void Navigator::late_stop_end() {
+  if (!(config_.rop_sd > 0) || !config_.lateral_velocity_update) return;
+  const Eigen::Vector3d axis = x_.q.toRotationMatrix().col(2);
+  kf_.covariance().block<3, 3>(kVel, kVel) += (config_.rop_sd * config_.rop_sd) * axis * axis.transpose();
+}
+
+void Navigator::tally_update() {
+  if (config_.pipe_tally_m.empty() || latest_depth_) return;  // measured depth, when there is one, wins
+  if (!config_.pipe_tally_repeats && tally_stops_ >= config_.pipe_tally_m.size()) return;
+  const double joint = config_.pipe_tally_m[config_.pipe_tally_repeats ? 0 : tally_stops_];
+  ++tally_stops_;
+  const Measurement<1> m = along_hole_distance(x_, tally_distance_ + joint,
+                                               config_.pipe_tally_sd * std::sqrt(static_cast<double>(tally_stops_)));
+  apply(kf_.update(m.r, m.h, m.noise));
+  count("tally_updates");
+  tally_distance_ += joint;
 }
 
 void Navigator::still_updates(bool period_end) {
@@ -783,8 +825,11 @@ void Navigator::still_updates(bool period_end) {
 
 void Navigator::magnetic_update() {
   mag_done_this_period_ = true;
-  const Eigen::Vector3d b = mag_stats_.mean_b(), f = mag_stats_.mean_f();
-  const double total = b.norm(), dip = dip_of(f, b);
+  // The gate sees the field as read, as the references learnt at alignment did; the heading, the
+  // field less the axial bias the filter estimates.
+  const Eigen::Vector3d raw_b = mag_stats_.mean_b(), f = mag_stats_.mean_f();
+  const Eigen::Vector3d b = raw_b - mag_axial_ * Eigen::Vector3d::UnitZ();
+  const double total = raw_b.norm(), dip = dip_of(f, raw_b);
   const double deg = std::numbers::pi / 180.0;
   if (std::abs(total - b0_.value_or(total)) > config_.field_tol_uT ||
       std::abs(dip - dip0_.value_or(dip)) > config_.dip_tol) {
@@ -830,7 +875,9 @@ void Navigator::fill_attitude(Estimate& e, const NavState& x, const StateMatrix&
   e.gravity_toolface_deg = a.toolface_valid ? wrap_deg_360(a.toolface * kRadToDeg) : 0.0;
   e.inclination_sd_deg = a.inclination_sd * kRadToDeg;
   e.azimuth_sd_deg = a.azimuth_sd * kRadToDeg;
-  e.toolface_sd_deg = a.toolface_sd * kRadToDeg;
+  // The toolface of a turning tool is known only as well as the instant it stands for (the row's
+  // mean rate: e.rpm is filled before).
+  e.toolface_sd_deg = std::hypot(a.toolface_sd * kRadToDeg, std::abs(e.rpm) * 6.0 * config_.time_tag_sd);
   e.valid = true;
   e.azimuth_valid = a.azimuth_valid;
   e.toolface_valid = a.toolface_valid;

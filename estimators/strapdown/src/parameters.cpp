@@ -1,8 +1,10 @@
 #include "plumb/strapdown/parameters.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include "plumb/estimator/parameter_reader.hpp"
@@ -21,17 +23,52 @@ constexpr double kMilliG = 9.80665e-3;                   // mg -> m/s^2
 // Grade presets: the simulator's table (sim/drilling.hpp) of typical sensor classes.
 struct Grade {
   const char* name;
-  double gyro_bias_dph, gyro_arw, accel_bias_mg, accel_vrw;
+  double gyro_bias_dph, gyro_arw, accel_bias_mg, accel_vrw, gyro_scale_ppm;
 };
-constexpr Grade kGrades[] = {{"navigation", 0.01, 0.002, 0.025, 0.005},
-                             {"tactical", 1.0, 0.05, 0.3, 0.03},
-                             {"mems", 10.0, 0.3, 2.0, 0.06}};
+constexpr Grade kGrades[] = {{"navigation", 0.01, 0.002, 0.025, 0.005, 5},
+                             {"tactical", 1.0, 0.05, 0.3, 0.03, 100},
+                             {"mems", 10.0, 0.3, 2.0, 0.06, 1000}};
 
 std::optional<double> optional_number(const estimator::ParameterReader& reader, const estimator::Parameters& given,
                                       const std::string& name, double min, double max) {
   const auto it = given.find(name);
   if (it == given.end() || it->second.empty()) return std::nullopt;
   return reader.number(name, min, max);
+}
+
+// pipe_joint_m (one length for every stop) or pipe_tally_m (a list), not both.
+void parse_tally(const estimator::ParameterReader& r, const estimator::Parameters& given, NavigatorConfig& c) {
+  const std::optional<double> joint = optional_number(r, given, "pipe_joint_m", 0.01, 100);
+  const auto list = given.find("pipe_tally_m");
+  const bool has_list = list != given.end() && !list->second.empty();
+  if (joint && has_list) throw ParameterError("parameters 'pipe_joint_m' and 'pipe_tally_m' exclude each other: give one");
+  c.pipe_tally_sd = r.number("pipe_tally_sd_m", 0, 10);
+  c.pipe_connection_s = r.number("pipe_connection_s", 0, 1e5);
+  if (joint) {
+    c.pipe_tally_m = {*joint};
+    c.pipe_tally_repeats = true;
+    return;
+  }
+  if (!has_list) return;
+  std::string text = list->second;
+  for (char& ch : text) {
+    if (ch == ',' || ch == ';') ch = ' ';
+  }
+  std::istringstream in(text);
+  std::string item;
+  while (in >> item) {
+    std::size_t used = 0;
+    double v = std::numeric_limits<double>::quiet_NaN();
+    try {
+      v = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != item.size() || !(v >= 0 && v <= 100)) {
+      throw ParameterError("parameter 'pipe_tally_m': '" + item + "' is not a joint length in [0, 100] m");
+    }
+    c.pipe_tally_m.push_back(v);
+  }
 }
 
 }  // namespace
@@ -54,6 +91,7 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"accel_vrw_mps_rt_h", "", "accelerometer velocity random walk (m/s/sqrt(h)); empty: from imu_grade"},
       {"gyro_bias_dph", "", "gyro turn-on bias, 1 sigma per axis (deg/h); empty: from imu_grade"},
       {"accel_bias_mg", "", "accelerometer turn-on bias, 1 sigma per axis (mg); empty: from imu_grade"},
+      {"gyro_scale_factor_ppm", "", "gyro scale-factor error, 1 sigma (ppm): rotary drilling turns the tool through 10^4 degrees or more between stops; empty: from imu_grade"},
       {"gyro_bias_instability_dph", "0", "gyro bias wander reached over bias_time_s (deg/h, random walk)"},
       {"accel_bias_instability_mg", "0", "accelerometer bias wander reached over bias_time_s (mg, random walk)"},
       {"bias_time_s", "3600", "time over which the bias instabilities are reached (s)"},
@@ -71,6 +109,7 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"field_tol_uT", "0.5", "a stop's |B| further than this from the reference skips its azimuth update (uT)"},
       {"dip_tol_deg", "0.3", "a stop's dip further than this from the reference skips its azimuth update (deg)"},
       {"mag_heading_sd_deg", "0.05", "magnetic heading model error per stop (deg), beside the noise"},
+      {"mag_axial_bias_uT", "0.3", "magnetization of the drill string along the tool axis, 1 sigma (uT): it turns the magnetic azimuth the same way at every stop; 0: not modelled"},
       {"mag_update_s", "5", "field averaged this long per stop for the azimuth update (s)"},
       {"kf_rate_hz", "20", "filter epochs per second (covariance propagation, updates, smoother storage)"},
       {"zupt_sd_mps", "0.001", "velocity of a still tool, 1 sigma (m/s)"},
@@ -78,9 +117,16 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"tilt_update", "0", "separate accelerometer tilt update at stops (1: counts the accelerometer noise twice with the zero-velocity updates)"},
       {"lateral_velocity_update", "1", "while moving, lateral velocity zero in the tool frame (a drilling tool; 0 for a foot, hand-carried or vehicle-mounted sensor)"},
       {"nhc_sd_mps", "0.01", "lateral velocity of a drilling tool, 1 sigma (m/s)"},
+      {"rop_sd_mps", "0.02", "rate of penetration, 1 sigma (m/s): a still period's end is seen late when the string speeds up slowly, and the tool may already move at this speed"},
       {"depth_sd_m", "", "measured depth noise, 1 sigma (m); empty: 0.01 or what the depth reports show before alignment, whichever is larger"},
       {"depth_interval_s", "1", "seconds between measured-depth updates"},
+      {"pipe_joint_m", "", "no depth sensor: every stop after the alignment is a connection that ran in one joint of this length (m)"},
+      {"pipe_tally_m", "", "no depth sensor: the joints run in after each stop, stop by stop, comma-separated (m; the alignment's stop is the first; 0 for a stop without a connection)"},
+      {"pipe_tally_sd_m", "0.02", "how well each joint of the tally is measured, 1 sigma (m)"},
+      {"pipe_connection_s", "20", "with a tally: a still period this long is a connection (a pause while drilling is shorter) (s)"},
       {"lever_arm_sd_m", "0.01", "how far the accelerometers may sit off the tool axis, 1 sigma (m): turning, they feel its centripetal acceleration; 0: not modelled"},
+      {"imu_samples", "instant", "what a reading is: instant (the value at its time stamp) or mean (the mean over its interval, stamped at the middle, as integrating sensors and decimating converters report)"},
+      {"time_tag_sd_s", "0.0005", "how well a reading's time stamp gives the instant it stands for, 1 sigma (s): the toolface of a turning tool is uncertain by its rate times this"},
       {"smooth", "0", "offline backward (RTS) smoother: push() emits nothing, flush() emits every row smoothed"},
       {"max_gap_s", "1", "a time step longer than this is a gap: reported, bridged by prediction only (s)"},
       {"gyro_time_offset_s", "0", "gyro readings were measured this long after their time stamp (s)"},
@@ -126,6 +172,7 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   c.accel_noise_stated = vrw.has_value();
   c.gyro_bias_sd = optional_number(r, given, "gyro_bias_dph", 0, 1e5).value_or(grade->gyro_bias_dph) * kDegPerHour;
   c.accel_bias_sd = optional_number(r, given, "accel_bias_mg", 0, 1e4).value_or(grade->accel_bias_mg) * kMilliG;
+  c.gyro_scale_sd = optional_number(r, given, "gyro_scale_factor_ppm", 0, 1e5).value_or(grade->gyro_scale_ppm) * 1e-6;
   c.gyro_bias_instability = r.number("gyro_bias_instability_dph", 0, 1e5) * kDegPerHour;
   c.accel_bias_instability = r.number("accel_bias_instability_mg", 0, 1e4) * kMilliG;
   c.bias_time_s = r.number("bias_time_s", 1, 1e7);
@@ -154,6 +201,7 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   c.field_tol_uT = r.number("field_tol_uT", 0, 1000);
   c.dip_tol = r.number("dip_tol_deg", 0, 90) * kDegToRad;
   c.mag_heading_sd = r.number("mag_heading_sd_deg", 0, 90) * kDegToRad;
+  c.mag_axial_bias_sd = r.number("mag_axial_bias_uT", 0, 100);
   c.mag_update_s = r.number("mag_update_s", 0, 3600);
   c.kf_rate_hz = r.number("kf_rate_hz", 0.01, 1e4);
   c.zupt_sd = r.number("zupt_sd_mps", 1e-9, 10);
@@ -161,11 +209,20 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   c.tilt_update = r.boolean("tilt_update");
   c.lateral_velocity_update = r.boolean("lateral_velocity_update");
   c.nhc_sd = r.number("nhc_sd_mps", 1e-9, 10);
+  c.rop_sd = r.number("rop_sd_mps", 0, 10);
   const std::optional<double> depth_sd = optional_number(r, given, "depth_sd_m", 1e-9, 100);
   c.depth_sd = depth_sd.value_or(0.01);
   c.depth_noise_stated = depth_sd.has_value();
   c.depth_interval_s = r.number("depth_interval_s", 0, 3600);
   c.lever_arm_sd = r.number("lever_arm_sd_m", 0, 1);
+  parse_tally(r, given, c);
+  const auto samples = given.find("imu_samples");
+  const std::string sample_kind = samples == given.end() ? "instant" : samples->second;
+  if (sample_kind != "instant" && sample_kind != "mean") {
+    throw ParameterError("parameter 'imu_samples': '" + sample_kind + "' is not one of instant, mean");
+  }
+  c.samples_are_means = sample_kind == "mean";
+  c.time_tag_sd = r.number("time_tag_sd_s", 0, 1);
   c.smooth = r.boolean("smooth");
   c.max_gap_s = r.number("max_gap_s", 1e-6, 1e6);
   c.gyro_time_offset_s = r.number("gyro_time_offset_s", -1, 1);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@ struct RunMetrics {
   double sum_z2_angle[3] = {0, 0, 0}, n_z_angle[3] = {0, 0, 0};
   double count_z_above_3 = 0;
   double end_azi_err_deg = 0, end_azi_sd_deg = 0;
+  double end_position_z2 = 0;  // sum over north, east, down of (error / sigma)^2 at the last row
   double max_attitude_err_deg() const { return std::max({max_inc_err_deg, max_azi_err_deg, max_tf_err_deg}); }
   double end_position_pct() const { return drilled_m > 0 ? 100.0 * end_position_err_m / drilled_m : 0.0; }
   double rms_z() const { return n_z > 0 ? std::sqrt(sum_z2 / n_z) : 0.0; }
@@ -47,8 +49,35 @@ inline estimator::Parameters parameters_for(const sim::DrillingScenario& s) {
   set("accel_vrw_mps_rt_h", std::max(s.grade.accel_vrw_mps_rt_h, 1e-4));
   set("gyro_bias_dph", std::max(s.grade.gyro_bias_deg_h, 1e-3));
   set("accel_bias_mg", std::max(s.grade.accel_bias_mg, 1e-3));
+  // The string's magnetization as the user would state it: the spread the simulator draws it from.
+  set("mag_axial_bias_uT", s.magnetometer.axial_bias_sd_uT);
   return p;
 }
+
+// Depth as a rig reports it: once a second, `late_s` after the fact, with noise and rounding,
+// held on the rows between reports or (sparse) only on the first row after each report. The
+// samples' own depth must be exact (the scenario's depth noise off).
+inline void as_rig_reports(std::vector<Sample>& samples, double rate_hz, double sd_m, double quantum_m, double late_s,
+                           bool sparse, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> noise(0.0, sd_m);
+  const auto per_report = static_cast<std::size_t>(std::llround(rate_hz));
+  const auto late = static_cast<std::size_t>(std::llround(late_s * rate_hz));
+  std::vector<double> exact(samples.size());
+  for (std::size_t k = 0; k < samples.size(); ++k) exact[k] = samples[k].depth_m;
+  double report = exact[0];
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const bool fresh = k % per_report == 0;
+    if (fresh) report = std::round((exact[k >= late ? k - late : 0] + noise(rng)) / quantum_m) * quantum_m;
+    samples[k].depth_m = report;
+    if (sparse && !fresh) samples[k].flags &= ~flags::kHasDepth;
+  }
+}
+
+// Runs the navigator over samples and scores its rows against the truth.
+inline RunMetrics score_drilling(const std::vector<Sample>& samples, const std::vector<TruthSample>& truth,
+                                 double rate, double drilled_m, const estimator::Parameters& params,
+                                 std::map<std::string, std::uint64_t>* counters = nullptr);
 
 inline RunMetrics run_drilling(const sim::DrillingScenario& scenario, const estimator::Parameters& params,
                                bool use_depth = true, std::map<std::string, std::uint64_t>* counters = nullptr) {
@@ -58,6 +87,13 @@ inline RunMetrics run_drilling(const sim::DrillingScenario& scenario, const esti
   if (!use_depth) {
     for (Sample& s : samples) s.flags &= ~flags::kHasDepth;
   }
+  return score_drilling(samples, truth, scenario.sample_rate_hz, simulator.trajectory().drilled_length_m(), params,
+                        counters);
+}
+
+inline RunMetrics score_drilling(const std::vector<Sample>& samples, const std::vector<TruthSample>& truth,
+                                 double rate, double drilled_m, const estimator::Parameters& params,
+                                 std::map<std::string, std::uint64_t>* counters) {
   Navigator nav(parse_parameters(params));
   std::vector<Estimate> rows;
   for (const Sample& s : samples) nav.push(s, rows);
@@ -66,8 +102,7 @@ inline RunMetrics run_drilling(const sim::DrillingScenario& scenario, const esti
 
   RunMetrics m;
   m.rows = rows.size();
-  m.drilled_m = simulator.trajectory().drilled_length_m();
-  const double rate = scenario.sample_rate_hz;
+  m.drilled_m = drilled_m;
   for (const Estimate& e : rows) {
     if (!e.valid || !e.navigation) continue;
     ++m.valid_rows;
@@ -94,6 +129,13 @@ inline RunMetrics run_drilling(const sim::DrillingScenario& scenario, const esti
     }
     const auto& p = e.navigation->position_m;
     m.end_position_err_m = std::hypot(p[0] - tr.north_m, p[1] - tr.east_m, p[2] - tr.down_m);
+    const double truth_p[3] = {tr.north_m, tr.east_m, tr.down_m};
+    m.end_position_z2 = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+      const double sd = e.navigation->position_sd_m[i];
+      if (sd > 0) m.end_position_z2 += (p[i] - truth_p[i]) * (p[i] - truth_p[i]) / (sd * sd);
+    }
+    if (getenv("DBG_END") && &e == &rows.back()) fprintf(stderr, "end err N %.3f E %.3f D %.3f  sd %.3f %.3f %.3f  I %.2f A %.2f\n", p[0]-tr.north_m, p[1]-tr.east_m, p[2]-tr.down_m, e.navigation->position_sd_m[0], e.navigation->position_sd_m[1], e.navigation->position_sd_m[2], tr.inclination_deg, tr.azimuth_deg);
     m.end_azi_err_deg = da;
     m.end_azi_sd_deg = e.azimuth_sd_deg;
   }

@@ -70,6 +70,9 @@ struct MagneticDisturbance {
 struct MagnetometerModel {
   bool present = true;           // false: Sample::b stays zero (no magnetometer on the tool)
   double sigma_uT = 0;           // white noise per axis per sample
+  // The drill string's magnetization: a bias along the tool axis, the same at every sample.
+  double axial_bias_sd_uT = 0;   // the spread it is drawn from (per seed) when not given
+  std::optional<double> axial_bias_uT;
   std::vector<MagneticDisturbance> disturbances;
 };
 
@@ -169,6 +172,7 @@ class DrillingSimulator {
   bool still_at(double t) const { return trajectory_.still_at(t); }
   double time_of(std::size_t index) const;
   const DrillingScenario& scenario() const { return scenario_; }
+  double magnetometer_axial_bias_uT() const { return axial_bias_uT_; }
   const DrillingTrajectory& trajectory() const { return trajectory_; }
   const Eigen::Vector3d& gyro_bias() const { return imu_.gyro_bias(); }    // the biases in use (truth)
   const Eigen::Vector3d& accel_bias() const { return imu_.accel_bias(); }
@@ -179,6 +183,7 @@ class DrillingSimulator {
   Eigen::Vector3d field_at(const DrillingState& state) const;
 
   DrillingScenario scenario_;
+  double axial_bias_uT_ = 0;
   DrillingTrajectory trajectory_;
   ImuModel imu_;
   std::size_t index_ = 0;

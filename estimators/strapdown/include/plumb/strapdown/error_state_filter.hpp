@@ -16,10 +16,20 @@
 //               they feel the centripetal w x (w x r) on top of the axis' motion, 0.9 m/s^2 at 90
 //               rpm and 1 cm, which a filter without it learns as an accelerometer bias while the
 //               string turns and carries, wrong, into the next stop's tilt
+//   dk  (19):   error of the gyro scale factor about the tool axis (dimensionless): a rotary string
+//               turns the tool through 10^4-10^5 degrees between stops, so 50 ppm (a tactical
+//               datasheet's figure) is degrees of toolface; without this state the filter's toolface
+//               sigma ignores it and the stop after a rotary segment keeps the wrong toolface, a
+//               confident one, by calling the accelerometers' disagreement a bias
+//   dm  (20):   error of the magnetometers' bias along the tool axis (uT): steel in the drill string
+//               magnetizes along the axis, a few tenths of a uT, which turns the magnetic azimuth by
+//               m sin(I) sin(A) / Bh (half a degree in a horizontal well) the same way at every stop;
+//               as white noise per stop it would be averaged away and the azimuth followed with a
+//               small sigma. Observable as the axis turns between stops; random constant.
 // Continuous dynamics (flat earth, earth.hpp), C = C_b^n, f_n = C f:
-//   phi' = -w_ie x phi - C dbg + C n_g          dv' = -f_n x phi - 2 w_ie x dv - C dba + e_D dg - C L dr + C n_a
+//   phi' = -w_ie x phi - C dbg - C e_z w_z dk + C n_g          dv' = -f_n x phi - 2 w_ie x dv - C dba + e_D dg - C L dr + C n_a
 //   dp'  = dv        dbg' = n_bg        dba' = n_ba (random walks)
-//   ds'  = (axis x v) . phi + axis . dv        (axis = C e_z, the tool axis in NED)       dg' = 0, dr' = 0
+//   ds'  = (axis x v) . phi + axis . dv        (axis = C e_z, the tool axis in NED)       dg' = 0, dr' = 0, dk' = 0, dm' = 0
 //   (L = centripetal_matrix(w): w x (w x r) = L r for r = (r_x, r_y, 0))
 // Measurements are residuals r = h(estimate) - z = H dx + noise.
 #pragma once
@@ -31,13 +41,13 @@
 
 namespace plumb::strapdown {
 
-inline constexpr int kStates = 19;
+inline constexpr int kStates = 21;
 using StateVector = Eigen::Matrix<double, kStates, 1>;
 using StateMatrix = Eigen::Matrix<double, kStates, kStates>;
 
 namespace index {
 inline constexpr int kAtt = 0, kVel = 3, kPos = 6, kGyroBias = 9, kAccelBias = 12, kDistance = 15, kGravity = 16,
-                     kLever = 17;
+                     kLever = 17, kGyroScale = 19, kMagAxial = 20;
 }
 
 // Noise densities in SI units.
@@ -103,6 +113,6 @@ class ErrorStateFilter {
 
 // Applies an error estimate to the whole-value state (and the bias estimates).
 void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bias, Eigen::Vector3d& accel_bias,
-               Eigen::Vector2d* lever = nullptr);
+               Eigen::Vector2d* lever = nullptr, double* gyro_scale = nullptr, double* mag_axial = nullptr);
 
 }  // namespace plumb::strapdown

