@@ -26,7 +26,7 @@ set(plumb_exported_libraries plumb_core plumb_plugin plumb_topics plumb_transpor
 install(TARGETS ${plumb_exported_libraries} EXPORT plumbTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT common
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(TARGETS plumb_csv plumb_mcap plumb_survey plumb_sim plumb_estimators_loader plumb_compare
+install(TARGETS plumb_csv plumb_mcap plumb_survey plumb_survey_file plumb_sim plumb_estimators_loader plumb_compare
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT common)
 install(TARGETS plumb RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT common)
 # plumb survey --plot and plumb compare --plots run it from plumb's own folder.
@@ -43,7 +43,7 @@ get_property(plumb_estimator_plugins GLOBAL PROPERTY PLUMB_ESTIMATOR_PLUGINS)
 foreach(plugin ${plumb_estimator_plugins})
   install(TARGETS plumb_estimator_${plugin} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT surface)
 endforeach()
-install(TARGETS plumb_calibration LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT surface)
+install(TARGETS plumb_calibration plumb_station_list LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT surface)
 install(TARGETS plumb-estimator plumb-calibrate plumb-survey RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT surface)
 # The live display, built only where civetweb is installed (components/plumb-display/CMakeLists.txt).
 if(TARGET plumb-display)
@@ -61,11 +61,13 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR
 # Public headers: the transport API with the message types it passes, the plugin facility, the
 # estimator API with the vocabulary it passes. Generated ones (ABI hashes, message types) included.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/transports/include/plumb ${PROJECT_BINARY_DIR}/transports/include/plumb
-                  ${PROJECT_SOURCE_DIR}/transports/plugin/include/plumb
                   ${PROJECT_BINARY_DIR}/idl/topics/plumb ${PROJECT_SOURCE_DIR}/idl/generate/runtime/plumb
-                  ${PROJECT_SOURCE_DIR}/estimators/api/include/plumb ${PROJECT_BINARY_DIR}/estimators/api/include/plumb
+                  ${PROJECT_SOURCE_DIR}/estimators/plugins/api/include/plumb ${PROJECT_BINARY_DIR}/estimators/plugins/api/include/plumb
                   ${PROJECT_SOURCE_DIR}/estimators/core/include/plumb
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT dev FILES_MATCHING PATTERN "*.hpp")
+# The plugin facility's folder holds the estimator loader too, which is not public: its header alone.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/estimators/plugins/loader/include/plumb/plugin
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/plumb COMPONENT dev FILES_MATCHING PATTERN "*.hpp")
 
 # The CMake package.
 install(EXPORT plumbTargets NAMESPACE plumb:: DESTINATION ${PLUMB_INSTALL_CMAKEDIR} COMPONENT dev)

@@ -3,6 +3,8 @@
 // sensor batches on plumb/sensor/raw (or any sensor topic) and the truth on plumb/sim/truth, paced
 // in real time, or writes the same run as CSV files.
 #include <algorithm>
+#include <chrono>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -110,6 +112,9 @@ RunResult run(Simulator& simulator, double rate_hz, Sink& sink, double speed, st
   samples.reserve(batch_size);
   truth.reserve(batch_size);
   const double period = 1.0 / rate_hz;
+  // A paced run says every few seconds how far it is: nobody should wait on it in silence.
+  constexpr auto kProgressEvery = std::chrono::seconds(5);
+  auto next_progress = std::chrono::steady_clock::now() + kProgressEvery;
   while (!components::g_stop && (loop || !simulator.done())) {
     samples.clear();
     truth.clear();
@@ -124,6 +129,11 @@ RunResult run(Simulator& simulator, double rate_hz, Sink& sink, double speed, st
     sink.write(samples, truth);
     result.samples += samples.size();
     ++result.batches;
+    if (sink.paced() && std::chrono::steady_clock::now() >= next_progress) {
+      next_progress += kProgressEvery;
+      std::cout << kProgram << ": " << std::fixed << std::setprecision(1) << samples.back().t << " s of the run sent ("
+                << result.samples << " samples)" << std::defaultfloat << std::endl;
+    }
   }
   return result;
 }

@@ -17,7 +17,7 @@
 #include "plumb/survey/detector_report.hpp"
 #include "plumb/survey/multi_station.hpp"
 #include "plumb/survey/survey_file.hpp"
-#include "survey_inputs.hpp"
+#include "plumb/survey/survey_inputs.hpp"
 #include "plot_runner.hpp"
 
 namespace plumb::cli {
@@ -94,11 +94,11 @@ int run_survey(const SurveyCommandOptions& o) {
   const std::string input = !o.stations.empty() ? o.stations : !o.attitude.empty() ? o.attitude : o.sensor;
   try {
     if (!o.stations.empty()) {
-      for (const auto& s : read_station_csv(o.stations)) collect(s);
+      for (const auto& s : survey::read_station_csv(o.stations)) collect(s);
     } else if (!o.attitude.empty()) {
-      const auto estimates = read_attitude_csv(o.attitude, o.window_s);
+      const auto estimates = survey::read_attitude_csv(o.attitude, o.window_s);
       if (!o.depth.empty())
-        for (const auto& d : read_depth_csv(o.depth)) detector.add_depth(d);
+        for (const auto& d : survey::read_depth_csv(o.depth)) detector.add_depth(d);
       for (const auto& e : estimates) detector.add_attitude(e, "");
       detector.flush();
     } else {

@@ -28,8 +28,13 @@ else
 fi
 
 # Its own session, so that whatever the README starts in the background can be found afterwards.
+# Its output goes through a FIFO to a reader that keeps each line's arrival time (the silence rule).
+rules="$(dirname "$0")/walk_rules.py"
+mkfifo "$work/out"
+python3 -u "$rules" stamp "$work/log.txt" "$work/stamps.txt" < "$work/out" &
+stamper=$!
 start=$(date +%s)
-(cd "$work" && exec setsid timeout 600 bash -euo pipefail -x walkthrough.sh) > "$work/log.txt" 2>&1 &
+(cd "$work" && exec setsid timeout 600 bash -euo pipefail -x walkthrough.sh) > "$work/out" 2>&1 &
 runner=$!
 session=$runner
 wait $runner
@@ -43,6 +48,20 @@ else
 fi
 left=$(pgrep -s "$session" -a 2>/dev/null)
 [ -z "$left" ] && pass "nothing left running after the README" || fail "the README left programs running: $left"
+pkill -KILL -s "$session" 2>/dev/null  # they hold the FIFO open
+wait $stamper
+
+# The rules a new user meets on every step: nothing waits in silence, nothing ends with an empty result.
+if python3 "$rules" silence "$work/stamps.txt" 6; then
+  pass "no step waited longer than 6 s without a line of output"
+else
+  fail "a step waited in silence (above)"
+fi
+if python3 "$rules" results "$work"; then
+  pass "every file the README's steps wrote has content"
+else
+  fail "a step ended with an empty result (above)"
+fi
 
 # What the blocks promise, checked on what they produced.
 [ "$(grep -c '^inclination_deg' "$work/compensated.txt" 2>/dev/null)" = 2 ] &&

@@ -24,7 +24,7 @@ struct TransportOptions {
 void add_transport_options(CLI::App& app, TransportOptions& options);
 
 // --param [PLUGIN.]KEY=VALUE, the one parameter grammar of plumb estimate, plumb compare and
-// plumb-estimator (estimators/api assignments.hpp does the parsing). No short form: -p is --plugin
+// plumb-estimator (estimators/plugins/api assignments.hpp does the parsing). No short form: -p is --plugin
 // on plumb-estimator.
 void add_param_option(CLI::App& app, std::vector<std::string>& params);
 
