@@ -7,6 +7,7 @@
 
 #include "plumb/core/number.hpp"
 #include "plumb/csv/files.hpp"
+#include "plumb/survey/tool_code_file.hpp"
 
 namespace plumb::components {
 

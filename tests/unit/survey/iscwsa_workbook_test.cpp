@@ -13,6 +13,7 @@
 #include "plumb/csv/files.hpp"
 #include "plumb/survey/iscwsa.hpp"
 #include "plumb/survey/minimum_curvature.hpp"
+#include "plumb/survey/tool_code_file.hpp"
 
 namespace plumb::survey::iscwsa {
 namespace {

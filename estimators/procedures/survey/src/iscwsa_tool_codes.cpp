@@ -1,14 +1,9 @@
-// The built-in tool codes and the tool code file. Values: the ISCWSA MWD revision 4 and 5 model
+// The built-in tool codes. Values: the ISCWSA MWD revision 4 and 5 model
 // sheets (error-model-example-mwdrev4-iscwsa-1 and -mwdrev5-iscwsa-1) and the OWSG tool code set A,
 // revision 5.1 (codes A001Mc "MWD+SRGM" and A005Mc "MWD+IFR1"), which raised DEC-OH from 0.20 deg
 // to 0.21 deg and propagates XYM2 as systematic and XYM4E as random.
-#include <cmath>
-#include <map>
-#include <sstream>
 #include <stdexcept>
 
-#include "plumb/csv/files.hpp"
-#include "plumb/core/number.hpp"
 #include "plumb/survey/iscwsa.hpp"
 
 namespace plumb::survey::iscwsa {
@@ -105,62 +100,6 @@ ToolCode builtin_tool_code(const std::string& name) {
   std::string names;
   for (const auto& n : builtin_tool_codes()) names += (names.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown tool code '" + name + "' (built in: " + names + "; or a tool code file)");
-}
-
-ToolCode read_tool_code(std::istream& in, const std::string& source) {
-  ToolCode t{source, 5, 0.000572615, {}};
-  std::map<std::string, std::size_t> columns;
-  std::string line;
-  std::size_t line_no = 0;
-  const char* required[] = {"code", "weight_function", "magnitude", "unit", "propagation"};
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    const std::string where = source + ":" + std::to_string(line_no) + ": ";
-    if (line.empty()) continue;
-    if (line[0] == '#') {
-      std::istringstream words(line.substr(1));
-      std::string key, value;
-      words >> key >> value;
-      if (key == "tortuosity_rad_per_m" || key == "revision") {
-        const auto v = parse_number(value);
-        if (!v || !(*v > 0)) throw std::runtime_error(where + key + ": bad number '" + value + "'");
-        if (key == "revision") t.revision = static_cast<int>(*v);
-        else t.tortuosity_rad_per_m = *v;
-      }
-      continue;
-    }
-    const auto fields = csv::split_line(line);
-    if (columns.empty()) {
-      for (std::size_t i = 0; i < fields.size(); ++i) columns[fields[i]] = i;
-      for (const char* r : required)
-        if (!columns.count(r)) throw std::runtime_error(where + "no column '" + r + "' in the header");
-      continue;
-    }
-    const auto get = [&](const char* name) {
-      const std::size_t i = columns.at(name);
-      return i < fields.size() ? fields[i] : std::string();
-    };
-    Term term;
-    term.code = get("code");
-    term.weight_function = get("weight_function");
-    term.unit = get("unit");
-    const auto m = parse_number(get("magnitude"));
-    if (!m || !std::isfinite(*m) || *m < 0) throw std::runtime_error(where + "magnitude: bad number '" + get("magnitude") + "'");
-    term.magnitude = *m;
-    const std::string p = get("propagation");
-    if (p == "R") term.propagation = R;
-    else if (p == "S") term.propagation = S;
-    else if (p == "G") term.propagation = G;
-    else if (p == "W") term.propagation = W;
-    else throw std::runtime_error(where + "propagation '" + p + "': R, S, G or W");
-    if (!known_weight_function(term.weight_function))
-      throw std::runtime_error(where + "unknown weighting function '" + term.weight_function + "'");
-    if (term.weight_function == "XCL") term.weight_function = term.code == "XCLH" ? "XCLH" : "XCLA";
-    t.terms.push_back(term);
-  }
-  if (t.terms.empty()) throw std::runtime_error(source + ": no terms");
-  return t;
 }
 
 }  // namespace plumb::survey::iscwsa

@@ -14,7 +14,6 @@
 // diagnostic depth within 0.1 %.
 #pragma once
 
-#include <istream>
 #include <string>
 #include <vector>
 
@@ -67,10 +66,7 @@ struct Result {
 // function is std::invalid_argument naming the term.
 Result propagate(const std::vector<Station>& stations, const ToolCode& tool, const Field& field);
 
-// A tool code file: '#' comments (a line "# tortuosity_rad_per_m V" and "# revision N" are read),
-// the header `code,weight_function,magnitude,unit,propagation` and one row per term; propagation
-// R, S, G or W. Throws std::runtime_error naming the source and line.
-ToolCode read_tool_code(std::istream& in, const std::string& source);
+// A tool code file is read by plumb/survey/tool_code_file.hpp (estimators/formats/survey_file).
 
 // The built-in tool codes: "MWD" (ISCWSA MWD revision 5, OWSG values of 5.1.1: DEC-OH 0.21 deg),
 // "MWD:rev5" (the revision 5 example workbooks' values: DEC-OH 0.20 deg), "MWD:rev4", "MWD+IFR1"
