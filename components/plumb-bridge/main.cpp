@@ -133,7 +133,8 @@ std::string summary(const bridge::Counters& c) {
   return first ? std::string("nothing counted") : out.str();
 }
 
-int run(const Options& o) {
+// The options that CLI11 cannot check alone; the import of --replay files they give.
+csv::Import checked_import(const Options& o) {
   if (o.device.empty() == o.replay.empty()) throw std::invalid_argument("give either --device PATH or --replay FILE.csv");
   if (o.limits.accel_full_scale <= 0 || o.limits.mag_full_scale <= 0 || o.limits.gyro_full_scale <= 0 ||
       o.limits.temp_min_c >= o.limits.temp_max_c)
@@ -142,57 +143,69 @@ int run(const Options& o) {
   const csv::Import import = o.import.make();
   if (!o.device.empty() && !csv::is_default(import))
     throw std::invalid_argument("--column, --units and --axes apply to --replay files, not to --device");
+  return import;
+}
 
-  bridge::Counters counters;
-  int logged_errors = 0;
-  auto log_bad_input = [&](const std::string& what) {
-    if (logged_errors < o.max_logged_errors) std::cerr << kProgram << ": " << what << std::endl;
-    if (++logged_errors == o.max_logged_errors)
+// Bad rows and lines: the first --max-logged-errors printed, the later ones only counted.
+class BadInputLog {
+ public:
+  explicit BadInputLog(int max_logged) : max_logged_(max_logged) {}
+  void operator()(const std::string& what) {
+    if (logged_ < max_logged_) std::cerr << kProgram << ": " << what << std::endl;
+    if (++logged_ == max_logged_)
       std::cerr << kProgram << ": further bad rows are counted (csv_errors) but not printed" << std::endl;
-  };
+  }
 
-  bridge::SampleChecker checker(counters, o.limits);
-  std::unique_ptr<bridge::SampleSource> source;
+ private:
+  int max_logged_;
+  int logged_ = 0;
+};
+
+// The CSV replay, or the serial device with its reopening said in the log.
+std::unique_ptr<bridge::SampleSource> open_source(const Options& o, const csv::Import& import, bridge::Counters& counters,
+                                                  bridge::SampleChecker& checker, BadInputLog& bad_input) {
   if (!o.replay.empty()) {
     const double speed = components::parse_rate_option(o.rate);
-    source = std::make_unique<bridge::ReplaySource>(
+    return std::make_unique<bridge::ReplaySource>(
         o.replay, speed, counters, o.strict,
-        [&](const csv::Error& e) { log_bad_input(std::string(e.what()) + " (row skipped)"); }, import,
+        [&bad_input](const csv::Error& e) { bad_input(std::string(e.what()) + " (row skipped)"); }, import,
         [](const std::string& warning) { std::cerr << kProgram << ": warning: " << warning << std::endl; });
-  } else {
-    bridge::SerialOptions serial;
-    serial.path = o.device;
-    serial.baud = o.baud;
-    serial.backoff_min = std::chrono::milliseconds(std::llround(o.backoff_min_s * 1000));
-    serial.backoff_max = std::chrono::milliseconds(std::llround(o.backoff_max_s * 1000));
-    const auto on_event = [&](bridge::SerialPort::Event e, const std::string& what) {
-      if (e == bridge::SerialPort::Event::Opened) log("opened " + what);
-      if (e == bridge::SerialPort::Event::Closed) {
-        log("device lost (" + what + "); reopening with back-off");
-        checker.new_stream();
-      }
-      if (e == bridge::SerialPort::Event::OpenFailed)
-        log(what + "; retrying with back-off (" + seconds_text(o.backoff_min_s) + " s .. " +
-            seconds_text(o.backoff_max_s) + " s), reported again at attempts 2, 4, 8...");
-    };
-    source = std::make_unique<bridge::DeviceSource>(serial, *bridge::parse_mode(o.mode), counters, on_event);
   }
+  bridge::SerialOptions serial;
+  serial.path = o.device;
+  serial.baud = o.baud;
+  serial.backoff_min = std::chrono::milliseconds(std::llround(o.backoff_min_s * 1000));
+  serial.backoff_max = std::chrono::milliseconds(std::llround(o.backoff_max_s * 1000));
+  const auto on_event = [&checker, backoff_min_s = o.backoff_min_s, backoff_max_s = o.backoff_max_s](
+                            bridge::SerialPort::Event e, const std::string& what) {
+    if (e == bridge::SerialPort::Event::Opened) log("opened " + what);
+    if (e == bridge::SerialPort::Event::Closed) {
+      log("device lost (" + what + "); reopening with back-off");
+      checker.new_stream();
+    }
+    if (e == bridge::SerialPort::Event::OpenFailed)
+      log(what + "; retrying with back-off (" + seconds_text(backoff_min_s) + " s .. " + seconds_text(backoff_max_s) +
+          " s), reported again at attempts 2, 4, 8...");
+  };
+  return std::make_unique<bridge::DeviceSource>(serial, *bridge::parse_mode(o.mode), counters, on_event);
+}
 
-  CalibrationModel file_model;
-  if (!o.calibration_file.empty()) {
-    file_model = csv::read_calibration_file(o.calibration_file);
-    // Refused before anything starts: a bridge that would publish raw data only is not what was asked.
-    if (const auto problem = binding_problem(file_model, o.publish.binding); !problem.empty())
-      throw std::invalid_argument(o.calibration_file + ": " + problem);
-  }
+// --calibration, refused before anything starts when it does not bind to this tool: a bridge that
+// would publish raw data only is not what was asked.
+CalibrationModel calibration_from_file(const Options& o) {
+  CalibrationModel model;
+  if (o.calibration_file.empty()) return model;
+  model = csv::read_calibration_file(o.calibration_file);
+  if (const auto problem = binding_problem(model, o.publish.binding); !problem.empty())
+    throw std::invalid_argument(o.calibration_file + ": " + problem);
+  return model;
+}
 
-  components::install_stop_handler();
-  auto connection = components::connect(o.transport, kProgram);
-  PublisherOptions po = o.publish;
-  if (o.no_calibration_topic) po.calibration_topic.clear();
-  Publisher publisher(*connection.participant, po, counters, log);
-
-  log("reading " + source->describe() + " -> " + connection.transport->name() + " " + po.raw_topic + " and " +
+// Says what is read and published where, applies --calibration, and says whether coefficients are
+// still awaited.
+void start_publishing(const Options& o, const PublisherOptions& po, const components::Connection& connection,
+                      const bridge::SampleSource& source, Publisher& publisher, const CalibrationModel& file_model) {
+  log("reading " + source.describe() + " -> " + connection.transport->name() + " " + po.raw_topic + " and " +
       po.calibrated_topic + " (" + (po.reliable ? "reliable" : "best effort") + "), status on " + po.status_topic);
   if (!o.calibration_file.empty() && !publisher.set_calibration(file_model, o.calibration_file))
     throw std::runtime_error(o.calibration_file + ": coefficients cannot be applied");
@@ -200,72 +213,110 @@ int run(const Options& o) {
   if (!publisher.has_calibration())
     log("no calibration yet: raw data flows on " + po.raw_topic + "; " + po.calibrated_topic +
         " starts once coefficients arrive" + (po.calibration_topic.empty() ? "" : " on " + po.calibration_topic));
-
   if (o.wait_subscribers_s > 0) {
     const auto until = Clock::now() + std::chrono::duration<double>(o.wait_subscribers_s);
     while (publisher.sensor_readers() == 0 && Clock::now() < until && !components::g_stop)
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     log(std::to_string(publisher.sensor_readers()) + " sensor topic reader(s) matched");
   }
+}
 
-  Batcher batcher;
-  std::vector<Sample> samples;
-  const auto status_period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.status_period_s));
-  const auto started = Clock::now();
-  auto next_status = started;
-  auto next_calibration_poll = started;
-  std::uint64_t problems_at_last_status = 0;
-  std::string last_error;
-  bool source_alive = true;
-  // Silence is said at 5, 10, 20... s without a sample: what is read, and what could be wrong.
-  auto last_sample = started;
-  double next_silence_note_s = 5;
-  std::uint64_t total_samples = 0;
-  try {
-    while (!components::g_stop && source_alive) {
-      samples.clear();
-      source_alive = source->poll(samples, std::chrono::milliseconds(10));
-      const auto now = Clock::now();
-      if (!samples.empty()) {
-        total_samples += samples.size();
-        last_sample = now;
-        next_silence_note_s = 5;
-      } else if (std::chrono::duration<double>(now - last_sample).count() > next_silence_note_s) {
-        log("no sample from " + source->describe() + " for " + std::to_string(static_cast<int>(next_silence_note_s)) +
-            " s (" + (source->healthy() ? "open; is the board sending, at this --baud?" : "not open") + "); " +
-            summary(counters));
-        next_silence_note_s *= 2;
+// The bridge's loop: samples from the source, checked, batched and published; coefficients polled;
+// status once a period; silence said at 5, 10, 20... s without a sample.
+class Pump {
+ public:
+  Pump(const Options& o, bridge::SampleSource& source, bridge::SampleChecker& checker, Publisher& publisher,
+       bridge::Counters& counters)
+      : o_(o), source_(source), checker_(checker), publisher_(publisher), counters_(counters) {}
+
+  // Until Ctrl-C, the end of the source or --duration. A --strict replay's bad row ends it with
+  // what was batched published and a failed status, then goes on up.
+  void run() {
+    try {
+      while (!components::g_stop && step()) {
       }
-      for (auto& s : samples) {
-        if (checker.check(s) && batcher.add(s, now)) publisher.publish(batcher.take());
-      }
-      if (batcher.due(now)) publisher.publish(batcher.take());
-      if (now >= next_calibration_poll) {
-        publisher.poll_calibration();
-        next_calibration_poll = now + std::chrono::milliseconds(100);
-      }
-      if (now >= next_status) {
-        const std::string error = source->last_error();
-        if (!error.empty()) last_error = error;
-        const bool new_problems = counters.problems() != problems_at_last_status;
-        problems_at_last_status = counters.problems();
-        publisher.publish_status(!source->healthy() || new_problems ? "degraded" : "running", last_error);
-        next_status += status_period;
-        if (next_status < now) next_status = now + status_period;
-      }
-      if (o.duration_s > 0 && now - started >= std::chrono::duration<double>(o.duration_s)) break;
+    } catch (const csv::Error& e) {
+      publisher_.publish(batcher_.take());
+      publisher_.finish();
+      publisher_.publish_status("failed", e.what());
+      log("stopped at the first bad row (--strict); " + summary(counters_));
+      throw;
     }
-  } catch (const csv::Error& e) {  // --strict replay
-    publisher.publish(batcher.take());
-    publisher.finish();
-    publisher.publish_status("failed", e.what());
-    log("stopped at the first bad row (--strict); " + summary(counters));
-    throw;
+    publisher_.publish(batcher_.take());
+    publisher_.finish();
+    if (!source_.last_error().empty()) last_error_ = source_.last_error();
   }
-  publisher.publish(batcher.take());
-  publisher.finish();
-  if (!source->last_error().empty()) last_error = source->last_error();
-  publisher.publish_status("stopping", last_error);
+
+  std::uint64_t total_samples() const { return total_samples_; }
+  const std::string& last_error() const { return last_error_; }
+
+ private:
+  // One poll of the source; false when the source ended or --duration is over.
+  bool step() {
+    samples_.clear();
+    const bool source_alive = source_.poll(samples_, std::chrono::milliseconds(10));
+    const auto now = Clock::now();
+    note_samples(now);
+    for (auto& s : samples_) {
+      if (checker_.check(s) && batcher_.add(s, now)) publisher_.publish(batcher_.take());
+    }
+    if (batcher_.due(now)) publisher_.publish(batcher_.take());
+    if (now >= next_calibration_poll_) {
+      publisher_.poll_calibration();
+      next_calibration_poll_ = now + std::chrono::milliseconds(100);
+    }
+    if (now >= next_status_) publish_status(now);
+    if (o_.duration_s > 0 && now - started_ >= std::chrono::duration<double>(o_.duration_s)) return false;
+    return source_alive;
+  }
+
+  void note_samples(Clock::time_point now) {
+    if (!samples_.empty()) {
+      total_samples_ += samples_.size();
+      last_sample_ = now;
+      next_silence_note_s_ = 5;
+    } else if (std::chrono::duration<double>(now - last_sample_).count() > next_silence_note_s_) {
+      log("no sample from " + source_.describe() + " for " + std::to_string(static_cast<int>(next_silence_note_s_)) +
+          " s (" + (source_.healthy() ? "open; is the board sending, at this --baud?" : "not open") + "); " +
+          summary(counters_));
+      next_silence_note_s_ *= 2;
+    }
+  }
+
+  void publish_status(Clock::time_point now) {
+    const std::string error = source_.last_error();
+    if (!error.empty()) last_error_ = error;
+    const bool new_problems = counters_.problems() != problems_at_last_status_;
+    problems_at_last_status_ = counters_.problems();
+    publisher_.publish_status(!source_.healthy() || new_problems ? "degraded" : "running", last_error_);
+    next_status_ += status_period_;
+    if (next_status_ < now) next_status_ = now + status_period_;
+  }
+
+  const Options& o_;
+  bridge::SampleSource& source_;
+  bridge::SampleChecker& checker_;
+  Publisher& publisher_;
+  bridge::Counters& counters_;
+  Batcher batcher_;
+  std::vector<Sample> samples_;
+  const Clock::duration status_period_ =
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o_.status_period_s));
+  const Clock::time_point started_ = Clock::now();
+  Clock::time_point next_status_ = started_;
+  Clock::time_point next_calibration_poll_ = started_;
+  Clock::time_point last_sample_ = started_;
+  double next_silence_note_s_ = 5;
+  std::uint64_t problems_at_last_status_ = 0;
+  std::uint64_t total_samples_ = 0;
+  std::string last_error_;
+};
+
+// The end: status, the summary line, time for reliable readers, and the exit status: 1 when the
+// calibrated stream was stopped or nothing was read.
+int finish(const Options& o, const PublisherOptions& po, Publisher& publisher, const bridge::SampleSource& source,
+           const bridge::Counters& counters, const Pump& pump) {
+  publisher.publish_status("stopping", pump.last_error());
   log(std::string(components::g_stop ? "interrupted" : "finished") + "; " + summary(counters));
   if (po.reliable && !components::g_stop) components::sleep_while_running(o.linger_s);
   // Even after Ctrl-C: a writer deleted right after its last write may take that message with it.
@@ -276,13 +327,33 @@ int run(const Options& o) {
     components::print_error(kProgram, "the calibrated stream was stopped by the |G| check (above); only raw data was published");
     return 1;
   }
-  if (total_samples == 0) {
+  if (pump.total_samples() == 0) {
     // Ended having published nothing: say it, and do not report success.
-    components::print_error(kProgram, "no sample read from " + source->describe() +
-                                          (last_error.empty() ? std::string() : " (" + last_error + ")"));
+    components::print_error(kProgram, "no sample read from " + source.describe() +
+                                          (pump.last_error().empty() ? std::string() : " (" + pump.last_error() + ")"));
     return 1;
   }
   return 0;
+}
+
+int run(const Options& o) {
+  const csv::Import import = checked_import(o);
+  bridge::Counters counters;
+  BadInputLog bad_input(o.max_logged_errors);
+  bridge::SampleChecker checker(counters, o.limits);
+  const std::unique_ptr<bridge::SampleSource> source = open_source(o, import, counters, checker, bad_input);
+  const CalibrationModel file_model = calibration_from_file(o);
+
+  components::install_stop_handler();
+  auto connection = components::connect(o.transport, kProgram);
+  PublisherOptions po = o.publish;
+  if (o.no_calibration_topic) po.calibration_topic.clear();
+  Publisher publisher(*connection.participant, po, counters, log);
+  start_publishing(o, po, connection, *source, publisher, file_model);
+
+  Pump pump(o, *source, checker, publisher, counters);
+  pump.run();
+  return finish(o, po, publisher, *source, counters, pump);
 }
 
 }  // namespace

@@ -157,6 +157,36 @@ std::string orientation_problem(std::vector<calibration::StationAverage>& record
   return {};
 }
 
+// The position the detector just recorded: kept and the next one prompted, or refused by the
+// orientation check (the operator puts the tool right and it is measured again).
+void take_station(const std::vector<sim::StationPlan>& plans, int& index, StationDetector& detector,
+                  std::vector<calibration::StationAverage>& checked, std::vector<calibration::Station>& stations,
+                  std::atomic<int>& requested, std::atomic<int>& refused) {
+  const int total = static_cast<int>(plans.size());
+  const auto& plan = plans[static_cast<std::size_t>(index)];
+  calibration::Station st;
+  st.name = plan.name;
+  st.start_s = detector.start_s();
+  st.end_s = detector.end_s();
+  st.orientation = calibration::parse_orientation(plan.orientation);
+  st.run = plan.run;
+  if (const auto problem = orientation_problem(checked, st, detector.recorded_accel()); !problem.empty()) {
+    std::printf("      NOT RECORDED: %s\n[%d/%d] %s\n", problem.c_str(), index + 1, total, prompt(st.orientation).c_str());
+    detector.begin_station(false);
+    ++refused;  // the simulated operator, if any, corrects the position
+    return;
+  }
+  stations.push_back(st);
+  ++index;
+  std::printf("      recorded %s [%.1f, %.1f] s (%d/%d done)\n", plan.name.c_str(), st.start_s, st.end_s, index, total);
+  if (index < total) {
+    std::printf("[%d/%d] %s\n", index + 1, total,
+                prompt(calibration::parse_orientation(plans[static_cast<std::size_t>(index)].orientation)).c_str());
+    detector.begin_station(false);
+    requested = index;  // the simulated operator, if any, follows the prompt
+  }
+}
+
 }  // namespace
 
 int run_live(const Options& o) {
@@ -222,31 +252,7 @@ int run_live(const Options& o) {
         } else if (ev == StationDetector::Event::Settled) {
           std::printf("      still and settled; recording %.0f s\n", o.station_s);
         } else if (ev == StationDetector::Event::Recorded) {
-          const auto& plan = plans[static_cast<std::size_t>(index)];
-          calibration::Station st;
-          st.name = plan.name;
-          st.start_s = detector.start_s();
-          st.end_s = detector.end_s();
-          st.orientation = calibration::parse_orientation(plan.orientation);
-          st.run = plan.run;
-          if (const auto problem = orientation_problem(checked, st, detector.recorded_accel()); !problem.empty()) {
-            // Not recorded: the operator puts the tool right and the position is measured again.
-            std::printf("      NOT RECORDED: %s\n[%d/%d] %s\n", problem.c_str(), index + 1, total,
-                        prompt(st.orientation).c_str());
-            detector.begin_station(false);
-            ++refused;  // the simulated operator, if any, corrects the position
-            continue;
-          }
-          stations.push_back(st);
-          ++index;
-          std::printf("      recorded %s [%.1f, %.1f] s (%d/%d done)\n", plan.name.c_str(), st.start_s, st.end_s, index,
-                      total);
-          if (index < total) {
-            std::printf("[%d/%d] %s\n", index + 1, total,
-                        prompt(calibration::parse_orientation(plans[static_cast<std::size_t>(index)].orientation)).c_str());
-            detector.begin_station(false);
-            requested = index;  // the simulated operator, if any, follows the prompt
-          }
+          take_station(plans, index, detector, checked, stations, requested, refused);
         }
         if (index >= total) break;
       }

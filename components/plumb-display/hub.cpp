@@ -134,31 +134,23 @@ void Hub::station(const std::string& key, const std::string& json) {
 }
 
 std::string Hub::hello_json() const {
-  std::string out = "{\"type\":\"hello\",\"sent\":";
-  append_json_number(out, wall_clock_ms(), 1);
-  out += ",\"history_s\":";
-  append_json_number(out, options_.history_s, 0);
-  out += ",\"history\":{";
-  bool first = true;
+  Json history = Json::object();
   for (const auto& [key, points] : history_) {
-    if (!first) out += ',';
-    first = false;
-    append_json_string(out, key);
-    out += ":[";
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const auto& p = points[i];
-      if (i) out += ',';
-      out += '[';
-      append_json_number(out, p.rx_ms, 0);
-      for (const double v : {p.inclination, p.azimuth, p.toolface, p.rpm}) {
-        out += ',';
-        append_json_number(out, v, 3);
-      }
-      out += ',' + std::to_string(p.flags) + ']';
+    Json list = Json::array();
+    for (const auto& p : points) {
+      Json point = Json::array({json_number(p.rx_ms, 0)});
+      for (const double v : {p.inclination, p.azimuth, p.toolface, p.rpm}) point.push_back(json_number(v, 3));
+      point.push_back(p.flags);
+      list.push_back(std::move(point));
     }
-    out += ']';
+    history[key] = std::move(list);
   }
-  return out + "}}";
+  Json hello;
+  hello["type"] = "hello";
+  hello["sent"] = json_number(wall_clock_ms(), 1);
+  hello["history_s"] = json_number(options_.history_s, 0);
+  hello["history"] = std::move(history);
+  return json_text(hello);
 }
 
 std::shared_ptr<Outbox> Hub::join() {

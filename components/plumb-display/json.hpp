@@ -1,17 +1,29 @@
-// The JSON the page reads: one object per message, written by hand (a few flat objects do not need
-// a JSON library). Field names are short because every browser gets them up to 30 times a second;
+// The JSON the page reads: one object per message, written with nlohmann::json (Debian's
+// nlohmann-json3-dev), which escapes strings and writes NaN as null. Field names are short and
+// numbers rounded to what the page shows because every browser gets them up to 30 times a second;
 // the page (web/index.html) is their only reader.
 #pragma once
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "plumb/topics/all.hpp"
 
 namespace plumb::display_component {
 
+// Objects keep their fields in the order written.
+using Json = nlohmann::ordered_json;
+
+// A number rounded to `decimals` places (an integer for 0), or null for NaN and infinities (JSON
+// has neither).
+Json json_number(double value, int decimals);
+// The JSON text of a value; bytes that are not UTF-8 become U+FFFD rather than an invalid document.
+std::string json_text(const Json& value);
+
 // Appends `text` as a JSON string (quotes, escapes).
 void append_json_string(std::string& out, const std::string& text);
-// Appends a number, or null for NaN and infinities (JSON has neither).
+// Appends a number as json_number writes it.
 void append_json_number(std::string& out, double value, int decimals);
 
 // Milliseconds since the epoch: the time stamps the page measures latency against.

@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "json.hpp"
 #include "web_assets.hpp"
 
 namespace plumb::display_component {
@@ -185,12 +186,17 @@ void WebServer::browser_closed(const mg_connection* conn) {
 
 std::string WebServer::stats_json() const {
   const HubStats s = hub_.stats();
-  std::ostringstream out;
-  out << "{\"browsers\":" << s.browsers << ",\"browsers_total\":" << s.browsers_total << ",\"attitudes\":" << s.attitudes
-      << ",\"statuses\":" << s.statuses << ",\"stations\":" << s.stations << ",\"dropped\":" << s.dropped
-      << ",\"frames_sent\":" << frames_sent_ << ",\"write_failures\":" << write_failures_ << ",\"refused\":" << refused_
-      << "}";
-  return out.str();
+  Json j;
+  j["browsers"] = s.browsers;
+  j["browsers_total"] = s.browsers_total;
+  j["attitudes"] = s.attitudes;
+  j["statuses"] = s.statuses;
+  j["stations"] = s.stations;
+  j["dropped"] = s.dropped;
+  j["frames_sent"] = frames_sent_.load();
+  j["write_failures"] = write_failures_.load();
+  j["refused"] = refused_.load();
+  return json_text(j);
 }
 
 }  // namespace plumb::display_component

@@ -53,159 +53,211 @@ void explain_silence(transport::Participant& participant, const SensorSubscripti
   std::cerr << std::endl;
 }
 
-}  // namespace
+// One runner per tool id, the topics in and out, and what the loop counts: the host as named
+// steps (announce, take and push, flush when idle, explain silence, summarise).
+class Host {
+ public:
+  // The first runner is made before anything connects, so that a bad plugin or parameter fails
+  // before anything runs; every further tool gets a copy made the same way.
+  explicit Host(const HostOptions& o)
+      : o_(o),
+        first_runner_(make_runner()),
+        conn_(components::connect(o.transport, "plumb-estimator")),
+        publication_(*conn_.participant),
+        input_(*conn_.participant, {o.input_topic, o.tool_id, o.reliable}),
+        status_(*conn_.participant, "plumb-estimator") {
+    for (const auto& slot : first_runner_.slots()) publication_.add(slot.name, slot.estimator->info().uses_gyro);
+    if (o.compare_truth) truth_ = std::make_unique<TruthLookup>(*conn_.participant, o.truth_topic);
+  }
 
-int run_host(const HostOptions& o) {
-  if (o.window_s < 0) throw std::invalid_argument("--window must be >= 0");
-  // One runner per tool id: the first is made now so that a bad plugin or parameter fails before
-  // anything runs; every further tool gets a copy made the same way.
-  const auto make_runner = [&] {
-    estimator::Runner r = estimator::load_runner(o.plugins);
-    r.configure(o.params, o.window_s);
+  int run();
+
+ private:
+  estimator::Runner make_runner() const {
+    estimator::Runner r = estimator::load_runner(o_.plugins);
+    r.configure(o_.params, o_.window_s);
     return r;
-  };
-  estimator::Runner first_runner = make_runner();
-  std::map<std::string, estimator::Runner> runners;  // tool id -> its runner
-  auto conn = components::connect(o.transport, "plumb-estimator");
-  EstimatePublication publication(*conn.participant);
-  for (const auto& slot : first_runner.slots()) publication.add(slot.name, slot.estimator->info().uses_gyro);
-  SensorSubscription input(*conn.participant, {o.input_topic, o.tool_id, o.reliable});
-  components::StatusReporter status(*conn.participant, "plumb-estimator");
-  std::unique_ptr<TruthLookup> truth;
-  if (o.compare_truth) truth = std::make_unique<TruthLookup>(*conn.participant, o.truth_topic);
-  components::install_stop_handler();
+  }
 
-  std::cerr << "plumb-estimator: " << conn.transport->name() << ", reading " << o.input_topic
-            << (o.tool_id.empty() ? " (each tool separately)" : " (tool '" + o.tool_id + "' only)") << ", plugins:";
-  for (const auto& slot : first_runner.slots())
+  estimator::Runner& runner_for(const std::string& tool) {
+    auto it = runners_.find(tool);
+    if (it != runners_.end()) return it->second;
+    if (runners_.empty()) return runners_.emplace(tool, std::move(first_runner_)).first->second;
+    return runners_.emplace(tool, make_runner()).first->second;
+  }
+
+  estimator::Runner::Sink publisher_for(const std::string& tool) {
+    return [this, tool](const estimator::Runner::Slot&, Estimate& e) {
+      publication_.publish(e, tool);
+      if (!o_.quiet) print_estimate(e, truth_.get(), input_.tools() > 1 ? " tool '" + tool + "'" : std::string());
+    };
+  }
+
+  void say_notices(estimator::Runner& runner, const std::string& tool) {
+    for (std::string& text : runner.take_notices()) {
+      std::cerr << "plumb-estimator: " << (input_.tools() > 1 ? "tool '" + tool + "': " : std::string()) << text << std::endl;
+      last_notice_ = std::move(text);
+    }
+  }
+
+  components::CounterList counters() const;
+  bool enough() const;
+  void announce() const;
+  void check_gyro(const estimator::Runner& runner, const std::vector<Sample>& chunk);
+  void push_chunk(const std::string& tool, std::vector<Sample>& chunk);
+  void flush_idle();
+  int summarise();
+
+  const HostOptions& o_;
+  estimator::Runner first_runner_;
+  std::map<std::string, estimator::Runner> runners_;  // tool id -> its runner
+  components::Connection conn_;
+  EstimatePublication publication_;
+  SensorSubscription input_;
+  components::StatusReporter status_;
+  std::unique_ptr<TruthLookup> truth_;
+  std::string last_notice_;  // the latest thing a plugin had to say, on plumb/status too
+  std::map<std::string, std::optional<double>> last_t_;  // tool id -> time of its last sample
+  std::uint64_t new_runs_ = 0;
+  bool checked_gyro_ = false;
+};
+
+components::CounterList Host::counters() const {
+  components::CounterList all = input_.counters();
+  all.emplace_back("new_runs", new_runs_);
+  // Summed over the tools, in the plugins' order: the per-plugin counters keep their names.
+  const std::size_t own = all.size();
+  if (runners_.empty())
+    for (auto& c : first_runner_.counters()) all.push_back(std::move(c));
+  for (const auto& [tool, runner] : runners_)
+    for (auto& [name, value] : runner.counters()) {
+      auto it = std::find_if(all.begin() + static_cast<std::ptrdiff_t>(own), all.end(),
+                             [&](const auto& c) { return c.first == name; });
+      if (it == all.end()) all.emplace_back(name, value);
+      else it->second += value;
+    }
+  return all;
+}
+
+bool Host::enough() const {
+  if (o_.max_estimates <= 0 || runners_.empty()) return false;
+  for (const auto& [tool, runner] : runners_)
+    for (const auto& slot : runner.slots())
+      if (slot.estimates < static_cast<std::uint64_t>(o_.max_estimates)) return false;
+  return true;
+}
+
+void Host::announce() const {
+  std::cerr << "plumb-estimator: " << conn_.transport->name() << ", reading " << o_.input_topic
+            << (o_.tool_id.empty() ? " (each tool separately)" : " (tool '" + o_.tool_id + "' only)") << ", plugins:";
+  for (const auto& slot : first_runner_.slots())
     std::cerr << ' ' << slot.name << " -> " << transport::topic_names::attitude(slot.name);
   std::cerr << std::endl;
+}
 
-  const auto runner_for = [&](const std::string& tool) -> estimator::Runner& {
-    auto it = runners.find(tool);
-    if (it != runners.end()) return it->second;
-    if (runners.empty()) return runners.emplace(tool, std::move(first_runner)).first->second;
-    return runners.emplace(tool, make_runner()).first->second;
-  };
-  const auto publisher_for = [&](const std::string& tool) {
-    return [&, tool](const estimator::Runner::Slot&, Estimate& e) {
-      publication.publish(e, tool);
-      if (!o.quiet) print_estimate(e, truth.get(), input.tools() > 1 ? " tool '" + tool + "'" : std::string());
-    };
-  };
-  std::string last_notice;  // the latest thing a plugin had to say, on plumb/status too
-  const auto say_notices = [&](estimator::Runner& runner, const std::string& tool) {
-    for (std::string& text : runner.take_notices()) {
-      std::cerr << "plumb-estimator: " << (input.tools() > 1 ? "tool '" + tool + "': " : std::string()) << text << std::endl;
-      last_notice = std::move(text);
-    }
-  };
-  std::map<std::string, std::optional<double>> last_t;  // tool id -> time of its last sample
-  std::uint64_t new_runs = 0;
-  const auto counters = [&] {
-    components::CounterList all = input.counters();
-    all.emplace_back("new_runs", new_runs);
-    // Summed over the tools, in the plugins' order: the per-plugin counters keep their names.
-    const std::size_t own = all.size();
-    if (runners.empty())
-      for (auto& c : first_runner.counters()) all.push_back(std::move(c));
-    for (const auto& [tool, runner] : runners)
-      for (auto& [name, value] : runner.counters()) {
-        auto it = std::find_if(all.begin() + static_cast<std::ptrdiff_t>(own), all.end(),
-                               [&](const auto& c) { return c.first == name; });
-        if (it == all.end()) all.emplace_back(name, value);
-        else it->second += value;
-      }
-    return all;
-  };
-  const auto enough = [&] {
-    if (o.max_estimates <= 0 || runners.empty()) return false;
-    for (const auto& [tool, runner] : runners)
-      for (const auto& slot : runner.slots())
-        if (slot.estimates < static_cast<std::uint64_t>(o.max_estimates)) return false;
-    return true;
-  };
+// Said once, at the first samples: a plugin that needs gyros on a topic that carries none.
+void Host::check_gyro(const estimator::Runner& runner, const std::vector<Sample>& chunk) {
+  if (checked_gyro_) return;
+  for (const auto& name : runner.needing_gyro())
+    if ((chunk.front().flags & flags::kHasGyro) == 0)
+      std::cerr << "plumb-estimator: " << name << " needs gyros, and " << o_.input_topic << " carries none" << std::endl;
+  checked_gyro_ = true;
+}
 
+// One tool's new samples through its runner. A source that started again (its clock back at the
+// beginning) is a new run: what the old run's windows hold is published, and the plugins start afresh.
+void Host::push_chunk(const std::string& tool, std::vector<Sample>& chunk) {
+  estimator::Runner& runner = runner_for(tool);
+  check_gyro(runner, chunk);
+  std::span<const Sample> rest(chunk);
+  for (std::size_t cut; (cut = new_run_start(rest, last_t_[tool])) < rest.size();) {
+    const double before = cut > 0 ? rest[cut - 1].t : last_t_[tool].value_or(0.0);
+    runner.push(rest.first(cut), publisher_for(tool));
+    runner.flush(publisher_for(tool));
+    runner.reset();
+    ++new_runs_;
+    std::cerr << "plumb-estimator: tool '" << tool << "': time went back from " << before << " s to " << rest[cut].t
+              << " s: a new run, estimated afresh" << std::endl;
+    last_t_[tool].reset();
+    rest = rest.subspan(cut);
+  }
+  runner.push(rest, publisher_for(tool));
+  say_notices(runner, tool);
+  last_t_[tool] = rest.back().t;
+  chunk.clear();
+}
+
+// The stream stopped: report what the open windows hold rather than keep it forever.
+void Host::flush_idle() {
+  for (auto& [tool, runner] : runners_) {
+    runner.flush(publisher_for(tool));
+    say_notices(runner, tool);
+  }
+  input_.restart_sequence();
+}
+
+int Host::summarise() {
+  status_.publish("stopping", counters());
+  std::cerr << "plumb-estimator: " << input_.batches() << " batches, " << input_.samples() << " samples ("
+            << input_.lost_samples() << " lost in transit, " << input_.silent_lost_samples() << " lost while silent)";
+  for (const auto& [tool, runner] : runners_)
+    for (const auto& slot : runner.slots())
+      std::cerr << ", " << slot.name << (runners_.size() > 1 ? " (tool '" + tool + "')" : std::string()) << ": "
+                << slot.estimates << " estimates";
+  std::cerr << std::endl;
+  if (input_.samples() == 0) {
+    // Stopped having received nothing: not a success, and the silence notes above said why.
+    components::print_error("plumb-estimator", "no sample received on " + o_.input_topic + " (" +
+                                                   std::to_string(input_.matched_writers()) + " writer(s) matched)");
+    return 1;
+  }
+  if (enough()) components::sleep_while_running(o_.linger_s);
+  return 0;
+}
+
+int Host::run() {
+  components::install_stop_handler();
+  announce();
   const auto t0 = Clock::now();
   auto last_sample_time = t0;
   double next_silence_note_s = 5;
   bool pending = false;  // samples pushed since the last estimate or flush
-  bool checked_gyro = false;
   SensorSubscription::ToolChunks chunks;
-  status.publish("running", counters());
+  status_.publish("running", counters());
   while (!components::g_stop && !enough()) {
-    if (o.timeout_s > 0 && seconds_since(t0) > o.timeout_s) {
-      status.publish("failed", counters(), "timed out");
-      components::print_error("plumb-estimator", "timed out before " + std::to_string(o.max_estimates) + " estimates per plugin");
+    if (o_.timeout_s > 0 && seconds_since(t0) > o_.timeout_s) {
+      status_.publish("failed", counters(), "timed out");
+      components::print_error("plumb-estimator", "timed out before " + std::to_string(o_.max_estimates) + " estimates per plugin");
       return 1;
     }
-    input.wait(std::chrono::milliseconds(100));
-    if (input.take(chunks)) {
-      for (auto& [tool, chunk] : chunks) {
-        if (chunk.empty()) continue;
-        estimator::Runner& runner = runner_for(tool);
-        if (!checked_gyro) {
-          for (const auto& name : runner.needing_gyro())
-            if ((chunk.front().flags & flags::kHasGyro) == 0)
-              std::cerr << "plumb-estimator: " << name << " needs gyros, and " << o.input_topic << " carries none"
-                        << std::endl;
-          checked_gyro = true;
-        }
-        // A source that started again (its clock back at the beginning) is a new run: what the
-        // old run's windows hold is published, and the plugins start afresh.
-        std::span<const Sample> rest(chunk);
-        for (std::size_t cut; (cut = new_run_start(rest, last_t[tool])) < rest.size();) {
-          const double before = cut > 0 ? rest[cut - 1].t : last_t[tool].value_or(0.0);
-          runner.push(rest.first(cut), publisher_for(tool));
-          runner.flush(publisher_for(tool));
-          runner.reset();
-          ++new_runs;
-          std::cerr << "plumb-estimator: tool '" << tool << "': time went back from " << before << " s to "
-                    << rest[cut].t << " s: a new run, estimated afresh" << std::endl;
-          last_t[tool].reset();
-          rest = rest.subspan(cut);
-        }
-        runner.push(rest, publisher_for(tool));
-        say_notices(runner, tool);
-        last_t[tool] = rest.back().t;
-        chunk.clear();
-      }
+    input_.wait(std::chrono::milliseconds(100));
+    if (input_.take(chunks)) {
+      for (auto& [tool, chunk] : chunks)
+        if (!chunk.empty()) push_chunk(tool, chunk);
       pending = true;
       last_sample_time = Clock::now();
       next_silence_note_s = 5;
     }
     const double silent_s = seconds_since(last_sample_time);
-    if (pending && o.idle_flush_s > 0 && silent_s > o.idle_flush_s) {
-      // The stream stopped: report what the open windows hold rather than keep it forever.
-      for (auto& [tool, runner] : runners) {
-        runner.flush(publisher_for(tool));
-        say_notices(runner, tool);
-      }
+    if (pending && o_.idle_flush_s > 0 && silent_s > o_.idle_flush_s) {
+      flush_idle();
       pending = false;
-      input.restart_sequence();
     }
     if (silent_s > next_silence_note_s) {
-      explain_silence(*conn.participant, input, o.input_topic, silent_s);
+      explain_silence(*conn_.participant, input_, o_.input_topic, silent_s);
       next_silence_note_s *= 2;  // 5, 10, 20, ... s: said, not shouted
     }
-    if (status.due()) status.publish("running", counters(), last_notice);
+    if (status_.due()) status_.publish("running", counters(), last_notice_);
   }
-  status.publish("stopping", counters());
-  std::cerr << "plumb-estimator: " << input.batches() << " batches, " << input.samples() << " samples ("
-            << input.lost_samples() << " lost in transit, " << input.silent_lost_samples() << " lost while silent)";
-  for (const auto& [tool, runner] : runners)
-    for (const auto& slot : runner.slots())
-      std::cerr << ", " << slot.name << (runners.size() > 1 ? " (tool '" + tool + "')" : std::string()) << ": "
-                << slot.estimates << " estimates";
-  std::cerr << std::endl;
-  if (input.samples() == 0) {
-    // Stopped having received nothing: not a success, and the silence notes above said why.
-    components::print_error("plumb-estimator", "no sample received on " + o.input_topic + " (" +
-                                       std::to_string(input.matched_writers()) + " writer(s) matched)");
-    return 1;
-  }
-  if (enough()) components::sleep_while_running(o.linger_s);
-  return 0;
+  return summarise();
+}
+
+}  // namespace
+
+int run_host(const HostOptions& o) {
+  if (o.window_s < 0) throw std::invalid_argument("--window must be >= 0");
+  Host host(o);
+  return host.run();
 }
 
 }  // namespace plumb::estimator_component

@@ -82,18 +82,22 @@ static void print_attitude(const plumb_msg_Attitude* a) {
   fflush(stdout);
 }
 
-int main(int argc, char** argv) {
-  long domain = 0, count = 0, timeout_s = 0;
-  const char* topic_name = "plumb/attitude/compensated";
-  const char* interface = NULL;
-  /* The same environment as every plumb executable: options given below override it. */
+struct options {
+  long domain, count, timeout_s;
+  const char* topic_name;
+  const char* interface;
+};
+
+/* The environment first (the same as every plumb executable's), then the command line over it.
+ * Returns -1 to go on, else the exit status (0 after --help, 2 for a usage error). */
+static int parse_options(int argc, char** argv, struct options* o) {
   const char* env_domain = getenv("PLUMB_DOMAIN_ID");
-  if (env_domain != NULL && *env_domain != '\0' && !parse_long(env_domain, 0, 232, &domain)) {
+  if (env_domain != NULL && *env_domain != '\0' && !parse_long(env_domain, 0, 232, &o->domain)) {
     fprintf(stderr, "plumb-c-attitude-listener: PLUMB_DOMAIN_ID='%s' is not a domain id (0..232)\n", env_domain);
     return 2;
   }
   const char* env_interface = getenv("PLUMB_INTERFACE");
-  if (env_interface != NULL && *env_interface != '\0') interface = env_interface;
+  if (env_interface != NULL && *env_interface != '\0') o->interface = env_interface;
   for (int i = 1; i < argc; ++i) {
     const char* arg = argv[i];
     const int has_value = i + 1 < argc;
@@ -101,22 +105,22 @@ int main(int argc, char** argv) {
       usage(stdout);
       return 0;
     } else if (strcmp(arg, "--domain") == 0 && has_value) {
-      if (!parse_long(argv[++i], 0, 232, &domain)) {
+      if (!parse_long(argv[++i], 0, 232, &o->domain)) {
         fprintf(stderr, "plumb-c-attitude-listener: --domain must be an integer in 0..232, not '%s'\n", argv[i]);
         return 2;
       }
     } else if (strcmp(arg, "--count") == 0 && has_value) {
-      if (!parse_long(argv[++i], 1, 1000000000L, &count)) {
+      if (!parse_long(argv[++i], 1, 1000000000L, &o->count)) {
         fprintf(stderr, "plumb-c-attitude-listener: --count must be a positive integer, not '%s'\n", argv[i]);
         return 2;
       }
     } else if (strcmp(arg, "--timeout") == 0 && has_value) {
-      if (!parse_long(argv[++i], 1, 1000000L, &timeout_s)) {
+      if (!parse_long(argv[++i], 1, 1000000L, &o->timeout_s)) {
         fprintf(stderr, "plumb-c-attitude-listener: --timeout must be a positive number of seconds, not '%s'\n", argv[i]);
         return 2;
       }
     } else if (strcmp(arg, "--interface") == 0 && has_value) {
-      interface = argv[++i];
+      o->interface = argv[++i];
     } else if (strcmp(arg, "--transport") == 0 && has_value) {
       if (strcmp(argv[++i], "cyclonedds") != 0) {
         fprintf(stderr, "plumb-c-attitude-listener: --transport %s: this example speaks Cyclone DDS only "
@@ -127,59 +131,52 @@ int main(int argc, char** argv) {
       fprintf(stderr, "plumb-c-attitude-listener: unknown or incomplete option '%s' (see --help)\n", arg);
       return 2;
     } else {
-      topic_name = arg;
+      o->topic_name = arg;
     }
   }
+  return -1;
+}
 
-  char* config = make_config(interface);
-  if (config == NULL) {
-    fprintf(stderr, "plumb-c-attitude-listener: invalid interface '%s'\n", interface);
-    return 2;
-  }
-  /* The configuration is given here, so CYCLONEDDS_URI is not needed (nor used). */
-  const dds_entity_t dom = dds_create_domain((dds_domainid_t)domain, config);
-  dds_free(config);
-  if (dom < 0) {
-    fprintf(stderr, "plumb-c-attitude-listener: cannot start Cyclone DDS: %s\n", dds_strretcode(dom));
-    return 1;
-  }
-  const dds_entity_t participant = dds_create_participant((dds_domainid_t)domain, NULL, NULL);
-  const dds_entity_t topic = participant < 0 ? participant
-                                             : dds_create_topic(participant, &plumb_msg_Attitude_desc, topic_name, NULL, NULL);
+/* A reliable XCDR1 reader on the topic, with a waitset that wakes on its data. Returns 0 and the
+ * entities, or the exit status after saying what failed (the domain deleted). */
+static int open_reader(const struct options* o, dds_entity_t dom, dds_entity_t* reader, dds_entity_t* waitset) {
+  const dds_entity_t participant = dds_create_participant((dds_domainid_t)o->domain, NULL, NULL);
+  const dds_entity_t topic =
+      participant < 0 ? participant : dds_create_topic(participant, &plumb_msg_Attitude_desc, o->topic_name, NULL, NULL);
   if (topic < 0) {
-    fprintf(stderr, "plumb-c-attitude-listener: cannot subscribe to '%s': %s\n", topic_name, dds_strretcode(topic));
+    fprintf(stderr, "plumb-c-attitude-listener: cannot subscribe to '%s': %s\n", o->topic_name, dds_strretcode(topic));
     dds_delete(dom);
     return 1;
   }
-
   dds_qos_t* qos = dds_create_qos();
   dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
   dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 64);
   const dds_data_representation_id_t xcdr1[] = {DDS_DATA_REPRESENTATION_XCDR1};
   dds_qset_data_representation(qos, 1, xcdr1);
-  const dds_entity_t reader = dds_create_reader(participant, topic, qos, NULL);
+  *reader = dds_create_reader(participant, topic, qos, NULL);
   dds_delete_qos(qos);
-  const dds_entity_t waitset = dds_create_waitset(participant);
-  const dds_entity_t condition = dds_create_readcondition(reader, DDS_ANY_STATE);
-  if (reader < 0 || waitset < 0 || condition < 0 || dds_waitset_attach(waitset, condition, 0) < 0) {
-    fprintf(stderr, "plumb-c-attitude-listener: cannot create a reader on '%s'\n", topic_name);
+  *waitset = dds_create_waitset(participant);
+  const dds_entity_t condition = dds_create_readcondition(*reader, DDS_ANY_STATE);
+  if (*reader < 0 || *waitset < 0 || condition < 0 || dds_waitset_attach(*waitset, condition, 0) < 0) {
+    fprintf(stderr, "plumb-c-attitude-listener: cannot create a reader on '%s'\n", o->topic_name);
     dds_delete(dom);
     return 1;
   }
+  return 0;
+}
 
-  signal(SIGINT, on_signal);
-  signal(SIGTERM, on_signal);
-  const dds_time_t deadline = timeout_s > 0 ? dds_time() + DDS_SECS(timeout_s) : DDS_NEVER;
+/* Prints what arrives until Ctrl-C, --count or --timeout; returns the exit status. */
+static int print_until_done(const struct options* o, dds_entity_t reader, dds_entity_t waitset) {
+  const long count = o->count;
+  const dds_time_t deadline = o->timeout_s > 0 ? dds_time() + DDS_SECS(o->timeout_s) : DDS_NEVER;
   long received = 0;
-  int status = 0;
   /* While nothing arrives, say so after 3, 6, 12... s: a silent wait looks like a hang. */
   dds_time_t last_message = dds_time();
   dds_duration_t next_note = DDS_SECS(3);
   while (!stop_requested && (count == 0 || received < count)) {
     if (dds_time() >= deadline) {
-      fprintf(stderr, "plumb-c-attitude-listener: %ld of %ld messages after %ld s, giving up\n", received, count, timeout_s);
-      status = 1;
-      break;
+      fprintf(stderr, "plumb-c-attitude-listener: %ld of %ld messages after %ld s, giving up\n", received, count, o->timeout_s);
+      return 1;
     }
     /* Short waits so that Ctrl-C and the deadline are noticed promptly. */
     dds_waitset_wait(waitset, NULL, 0, DDS_MSECS(200));
@@ -202,10 +199,35 @@ int main(int argc, char** argv) {
       dds_subscription_matched_status_t matched;
       dds_get_subscription_matched_status(reader, &matched);
       fprintf(stderr, "plumb-c-attitude-listener: nothing on %s for %lld s (%u writer(s) matched; same domain?)\n",
-              topic_name, (long long)((dds_time() - last_message) / DDS_NSECS_IN_SEC), matched.current_count);
+              o->topic_name, (long long)((dds_time() - last_message) / DDS_NSECS_IN_SEC), matched.current_count);
       next_note *= 2;
     }
   }
+  return 0;
+}
+
+int main(int argc, char** argv) {
+  struct options o = {0, 0, 0, "plumb/attitude/compensated", NULL};
+  const int parsed = parse_options(argc, argv, &o);
+  if (parsed >= 0) return parsed;
+
+  char* config = make_config(o.interface);
+  if (config == NULL) {
+    fprintf(stderr, "plumb-c-attitude-listener: invalid interface '%s'\n", o.interface);
+    return 2;
+  }
+  /* The configuration is given here, so CYCLONEDDS_URI is not needed (nor used). */
+  const dds_entity_t dom = dds_create_domain((dds_domainid_t)o.domain, config);
+  dds_free(config);
+  if (dom < 0) {
+    fprintf(stderr, "plumb-c-attitude-listener: cannot start Cyclone DDS: %s\n", dds_strretcode(dom));
+    return 1;
+  }
+  dds_entity_t reader = 0, waitset = 0;
+  if (open_reader(&o, dom, &reader, &waitset) != 0) return 1;
+  signal(SIGINT, on_signal);
+  signal(SIGTERM, on_signal);
+  const int status = print_until_done(&o, reader, waitset);
   dds_delete(dom); /* deletes the participant and everything in it */
   return status;
 }

@@ -626,10 +626,11 @@ void Navigator::align(const Input& in) {
   // relative one, it errs by the horizontal earth rate times sin(declination): 0.9 deg/h per 5 deg
   // of declination at 45 deg latitude, a gyro-bias-like error the zero-rate updates absorb.
   mech_ = Mechanization(earth_rate_ned(config_.latitude, 0.0), g_);
-  // A drilling tool turns about its own axis; a foot or a hand (no lateral-velocity update, the
-  // GLRT detector) has no such axis to be off.
-  lever_model_ = config_.lever_arm_sd > 0 && config_.lateral_velocity_update &&
-                 detector_.config().mode == StillnessConfig::Mode::Magnitude;
+  // A drilling tool turns about its own axis and moves along it; a foot or a hand (no
+  // lateral-velocity update, the GLRT detector) has no such axis: no offset from it, no turns of
+  // 10^4 degrees about it, no magnetized string along it and no rate of penetration.
+  drilling_tool_ = config_.lateral_velocity_update && detector_.config().mode == StillnessConfig::Mode::Magnitude;
+  lever_model_ = config_.lever_arm_sd > 0 && drilling_tool_;
   mech_.set_lever_model(lever_model_);
   x_ = NavState();
   x_.q = Eigen::Quaterniond(*c_bn).normalized();
@@ -646,9 +647,10 @@ void Navigator::align(const Input& in) {
   p0.block<3, 3>(kAccelBias, kAccelBias).diagonal().setConstant(config_.accel_bias_sd * config_.accel_bias_sd);
   p0(kDistance, kDistance) = depth_sd_ * depth_sd_;
   if (lever_model_) p0.block<2, 2>(kLever, kLever).diagonal().setConstant(config_.lever_arm_sd * config_.lever_arm_sd);
-  p0(kGyroScale, kGyroScale) = config_.gyro_scale_sd * config_.gyro_scale_sd;
-  // A drilling string's magnetization is along its axis; a foot or a hand has no such axis.
-  if (use_mag_ && config_.lateral_velocity_update) p0(kMagAxial, kMagAxial) = config_.mag_axial_bias_sd * config_.mag_axial_bias_sd;
+  if (drilling_tool_) {
+    p0(kGyroScale, kGyroScale) = config_.gyro_scale_sd * config_.gyro_scale_sd;
+    if (use_mag_) p0(kMagAxial, kMagAxial) = config_.mag_axial_bias_sd * config_.mag_axial_bias_sd;
+  }
   const double n = stats.count();
   const double dt = dt_nominal_ > 0 ? dt_nominal_ : 0.01;
   adopt_measured_noise(dt);
@@ -780,7 +782,7 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
 // moved along its axis, at up to the rate of penetration. Said to the filter as velocity
 // uncertainty along the axis at the end; depth, where there is some, takes it back out.
 void Navigator::late_stop_end() {
-  if (!(config_.rop_sd > 0) || !config_.lateral_velocity_update) return;
+  if (!(config_.rop_sd > 0) || !drilling_tool_) return;
   const Eigen::Vector3d axis = x_.q.toRotationMatrix().col(2);
   kf_.covariance().block<3, 3>(kVel, kVel) += (config_.rop_sd * config_.rop_sd) * axis * axis.transpose();
 }

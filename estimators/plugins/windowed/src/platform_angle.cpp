@@ -177,33 +177,24 @@ double smoother_end_error_var(const std::vector<double>& raw, int m, double nois
   return h2 * noise_var + std::max(0.0, diff * diff - (h3 - h2) * noise_var);
 }
 
-}  // namespace
+// The window's time axis, normalised: tau = (t - t_mid) / half in [-1, 1].
+struct TimeAxis {
+  double t0, t_mid, half, inv_half, even_dt;
+};
 
-PlatformAngle track_platform_angle(const WindowData& w, const PlatformAngleOptions& options) {
-  PlatformAngle pa;
+// The toolface of every sample, unwrapped into pa.raw; returns the mean square radial field.
+// Two light loops rather than one heavy one: a single loop holds more live values than there are
+// registers, and a spilled accumulator puts a memory round trip into every iteration.
+double unwrap_toolface(const WindowData& w, PlatformAngle& pa) {
   const std::size_t n = w.size();
-  if (n < 3) {
-    pa.reason = "too few samples to track the platform angle";
-    return pa;
-  }
-  // One pass for everything the constant-speed case needs (this is the estimators' hot loop):
-  // the unwrapped toolface, its second differences, the straight-line sums in normalised time
-  // tau in [-1, 1], and whether the samples are evenly spaced.
-  const double t0 = w.t.front(), t_mid = 0.5 * (t0 + w.t.back());
-  const double half = std::max(0.5 * (w.t.back() - t0), 1e-9), inv_half = 1 / half;
-  const double even_dt = (w.t.back() - t0) / static_cast<double>(n - 1);
   pa.raw.resize(n);
-  double radial_sum = 0, previous = 0, origin = 0, d2_sum = 0, worst_spacing = 0;
-  double s1 = 0, s2 = 0, sy = 0, sty = 0, syy = 0;
-  // Two light loops rather than one heavy one: a single loop holds more live values than there
-  // are registers, and a spilled accumulator puts a memory round trip into every iteration.
+  double radial_sum = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const double bx = w.bx[k], by = w.by[k];
     radial_sum += bx * bx + by * by;
     pa.raw[k] = fast_atan2(-by, bx);
   }
-  origin = pa.raw[0];
-  previous = origin;
+  double previous = pa.raw[0];
   double offset = 0;  // multiple of 2 pi added so far
   for (std::size_t k = 1; k < n; ++k) {
     const double m = pa.raw[k];
@@ -213,23 +204,110 @@ PlatformAngle track_platform_angle(const WindowData& w, const PlatformAngleOptio
     previous = m;
     pa.raw[k] = m + offset;
   }
+  return radial_sum / static_cast<double>(n);
+}
+
+// What the constant-speed case needs from the unwrapped toolface y = raw - origin: its second
+// differences (the phase noise) and the straight-line sums in tau.
+struct LineSums {
+  double d2_sum = 0, s1 = 0, s2 = 0, sy = 0, sty = 0, syy = 0;
+};
+
+LineSums line_sums(const WindowData& w, const std::vector<double>& raw, const TimeAxis& axis) {
+  LineSums s;
+  const double origin = raw[0];
   double last = origin, before_last = origin;
-  for (std::size_t k = 0; k < n; ++k) {
-    const double unwrapped = pa.raw[k];
+  for (std::size_t k = 0; k < raw.size(); ++k) {
+    const double unwrapped = raw[k];
     if (k >= 2) {
       const double d2 = unwrapped - 2 * last + before_last;
-      d2_sum += d2 * d2;
+      s.d2_sum += d2 * d2;
     }
     before_last = last;
     last = unwrapped;
-    const double tau = (w.t[k] - t_mid) * inv_half, y = unwrapped - origin;
-    s1 += tau, s2 += tau * tau, sy += y, sty += tau * y, syy += y * y;
+    const double tau = (w.t[k] - axis.t_mid) * axis.inv_half, y = unwrapped - origin;
+    s.s1 += tau, s.s2 += tau * tau, s.sy += y, s.sty += tau * y, s.syy += y * y;
   }
-  for (std::size_t k = 0; k < n; ++k) {
-    worst_spacing = std::max(worst_spacing, std::abs(w.t[k] - t0 - even_dt * static_cast<double>(k)));
+  return s;
+}
+
+// The largest distance of a sample time from an even grid: whether the step can be used.
+double worst_spacing(const WindowData& w, const TimeAxis& axis) {
+  double worst = 0;
+  for (std::size_t k = 0; k < w.size(); ++k)
+    worst = std::max(worst, std::abs(w.t[k] - axis.t0 - axis.even_dt * static_cast<double>(k)));
+  return worst;
+}
+
+// The lowest polynomial degree whose residuals are the noise alone (3 sigma of the variance
+// estimate), evaluated into pa.phase; pa.model_degree stays 0 when none up to max_degree fits.
+void fit_phase_polynomial(const WindowData& w, const TimeAxis& axis, const PolyFit& linear, int max_degree,
+                          PlatformAngle& pa) {
+  const std::size_t n = w.size();
+  const double origin = pa.raw[0];
+  const double tolerance = pa.phase_noise_var * (1 + 6 * std::sqrt(2.0 / static_cast<double>(n))) + 1e-12;
+  std::vector<double> tau, y;  // built only when a curve is needed
+  for (int degree = 1; degree <= max_degree; ++degree) {
+    if (degree == 2) {
+      tau.resize(n), y.resize(n);
+      for (std::size_t k = 0; k < n; ++k) tau[k] = (w.t[k] - axis.t_mid) * axis.inv_half, y[k] = pa.raw[k] - origin;
+    }
+    const PolyFit fit = degree == 1 ? linear : fit_polynomial(tau, y, degree);
+    if (fit.residual_var > tolerance) continue;
+    pa.model_degree = degree;
+    pa.residual_var = fit.residual_var;
+    pa.phase.resize(n);
+    pa.end_phase_var = pa.phase_noise_var * ((degree + 1) * (degree + 1) - 1) / static_cast<double>(n);
+    if (degree == 1) {
+      const double a = origin + fit.coef[0], b = fit.coef[1] * axis.inv_half;
+      for (std::size_t k = 0; k < n; ++k) pa.phase[k] = a + b * (w.t[k] - axis.t_mid);
+      return;
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      const double x = (w.t[k] - axis.t_mid) * axis.inv_half;
+      double v = 0;
+      for (int j = degree; j >= 0; --j) v = v * x + fit.coef[j];
+      pa.phase[k] = v + origin;
+    }
+    return;
   }
-  pa.radial_field = std::sqrt(radial_sum / static_cast<double>(n));  // RMS: no per-sample square root
-  pa.phase_noise_var = d2_sum / (6.0 * static_cast<double>(n - 2));
+}
+
+// No polynomial fits (stick-slip): a local quadratic smoother, and its error at the last sample.
+void smooth_phase(const WindowData& w, double smoothing_s, PlatformAngle& pa) {
+  const std::size_t n = w.size();
+  const double dt = w.nominal_dt > 0 ? w.nominal_dt : (w.t.back() - w.t.front()) / static_cast<double>(n - 1);
+  const int half_width = std::max(2, static_cast<int>(std::lround(smoothing_s / std::max(dt, 1e-9))));
+  pa.phase = smooth_local_quadratic(pa.raw, half_width);
+  pa.end_phase_var = smoother_end_error_var(pa.raw, std::min(half_width, static_cast<int>(n - 1) / 2), pa.phase_noise_var);
+  double ss = 0;
+  for (std::size_t k = 0; k < n; ++k) ss += (pa.raw[k] - pa.phase[k]) * (pa.raw[k] - pa.phase[k]);
+  pa.residual_var = ss / static_cast<double>(n);
+}
+
+}  // namespace
+
+PlatformAngle track_platform_angle(const WindowData& w, const PlatformAngleOptions& options) {
+  PlatformAngle pa;
+  const std::size_t n = w.size();
+  if (n < 3) {
+    pa.reason = "too few samples to track the platform angle";
+    return pa;
+  }
+  // Everything the constant-speed case needs in light passes (this is the estimators' hot loop):
+  // the unwrapped toolface, its second differences, the straight-line sums in normalised time
+  // tau in [-1, 1], and whether the samples are evenly spaced.
+  TimeAxis axis;
+  axis.t0 = w.t.front();
+  axis.t_mid = 0.5 * (axis.t0 + w.t.back());
+  axis.half = std::max(0.5 * (w.t.back() - axis.t0), 1e-9);
+  axis.inv_half = 1 / axis.half;
+  axis.even_dt = (w.t.back() - axis.t0) / static_cast<double>(n - 1);
+  const double mean_square_radial = unwrap_toolface(w, pa);
+  const LineSums sums = line_sums(w, pa.raw, axis);
+  const double spacing = worst_spacing(w, axis);
+  pa.radial_field = std::sqrt(mean_square_radial);  // RMS: no per-sample square root
+  pa.phase_noise_var = sums.d2_sum / (6.0 * static_cast<double>(n - 2));
   pa.block_span_rad = block_span(w.t, pa.raw);
   if (!(pa.radial_field > 0)) {
     pa.reason = "no radial magnetic field: platform angle unknown";
@@ -241,52 +319,15 @@ PlatformAngle track_platform_angle(const WindowData& w, const PlatformAngleOptio
     return pa;
   }
 
-  const PolyFit linear = line_from_sums(static_cast<double>(n), s1, s2, sy, sty, syy);
-  pa.rate_rad_s = linear.coef[1] / half;
+  const PolyFit linear = line_from_sums(static_cast<double>(n), sums.s1, sums.s2, sums.sy, sums.sty, sums.syy);
+  pa.rate_rad_s = linear.coef[1] / axis.half;
   // Block means miss the turn of a short window (one block); the fitted line does not.
-  pa.motion_rad = std::max(pa.block_span_rad, std::abs(pa.rate_rad_s) * 2 * half);
-
-  // Accept the lowest degree whose residuals are the noise alone (3 sigma of the variance estimate).
-  const double tolerance = pa.phase_noise_var * (1 + 6 * std::sqrt(2.0 / static_cast<double>(n))) + 1e-12;
-  std::vector<double> tau, y;  // built only when a curve is needed
-  for (int degree = 1; degree <= options.max_degree; ++degree) {
-    if (degree == 2) {
-      tau.resize(n), y.resize(n);
-      for (std::size_t k = 0; k < n; ++k) tau[k] = (w.t[k] - t_mid) * inv_half, y[k] = pa.raw[k] - origin;
-    }
-    const PolyFit fit = degree == 1 ? linear : fit_polynomial(tau, y, degree);
-    if (fit.residual_var <= tolerance) {
-      pa.model_degree = degree;
-      pa.residual_var = fit.residual_var;
-      pa.phase.resize(n);
-      pa.end_phase_var = pa.phase_noise_var * ((degree + 1) * (degree + 1) - 1) / static_cast<double>(n);
-      if (degree == 1) {
-        const double a = origin + fit.coef[0], b = fit.coef[1] * inv_half;
-        for (std::size_t k = 0; k < n; ++k) pa.phase[k] = a + b * (w.t[k] - t_mid);
-        break;
-      }
-      for (std::size_t k = 0; k < n; ++k) {
-        const double x = (w.t[k] - t_mid) * inv_half;
-        double v = 0;
-        for (int j = degree; j >= 0; --j) v = v * x + fit.coef[j];
-        pa.phase[k] = v + origin;
-      }
-      break;
-    }
-  }
-  if (pa.model_degree == 0) {
-    const double dt = w.nominal_dt > 0 ? w.nominal_dt : (w.t.back() - w.t.front()) / static_cast<double>(n - 1);
-    const int half_width = std::max(2, static_cast<int>(std::lround(options.smoothing_s / std::max(dt, 1e-9))));
-    pa.phase = smooth_local_quadratic(pa.raw, half_width);
-    pa.end_phase_var = smoother_end_error_var(pa.raw, std::min(half_width, static_cast<int>(n - 1) / 2),
-                                              pa.phase_noise_var);
-    double ss = 0;
-    for (std::size_t k = 0; k < n; ++k) ss += (pa.raw[k] - pa.phase[k]) * (pa.raw[k] - pa.phase[k]);
-    pa.residual_var = ss / static_cast<double>(n);
-  }
+  pa.motion_rad = std::max(pa.block_span_rad, std::abs(pa.rate_rad_s) * 2 * axis.half);
+  fit_phase_polynomial(w, axis, linear, options.max_degree, pa);
+  if (pa.model_degree == 0) smooth_phase(w, options.smoothing_s, pa);
   if (pa.model_degree == 1) {
-    pa.uniform_linear = worst_spacing <= 1e-6 * even_dt;
-    pa.step = pa.rate_rad_s * even_dt;
+    pa.uniform_linear = spacing <= 1e-6 * axis.even_dt;
+    pa.step = pa.rate_rad_s * axis.even_dt;
   }
   pa.turn_rad = pa.phase.back() - pa.phase.front();
   pa.ok = true;

@@ -210,6 +210,7 @@ class Navigator {
   double gyro_scale_ = 0;  // the z gyro's scale-factor error: it reads (1 + gyro_scale_) times the rate
   double mag_axial_ = 0;   // the magnetometers' bias along the tool axis, uT
   bool lever_model_ = false;
+  bool drilling_tool_ = false;  // a tool axis to turn about and move along (align())
   ErrorStateFilter kf_;
   ProcessNoise noise_;
   Mechanization mech_{Eigen::Vector3d::Zero(), 9.80665};
