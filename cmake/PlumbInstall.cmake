@@ -35,6 +35,8 @@ install(TARGETS ${plumb_exported_libraries} EXPORT plumbTargets
 install(TARGETS plumb_csv plumb_mcap plumb_survey plumb_survey_file plumb_sim plumb_estimators_loader plumb_compare
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT common)
 install(TARGETS plumb RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT common)
+# plumb survey --plot and plumb compare --plots run it from plumb's own folder.
+install(PROGRAMS ${PROJECT_SOURCE_DIR}/components/plumb-plot/plumb-plot DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT common)
 
 get_property(plumb_transport_plugins GLOBAL PROPERTY PLUMB_TRANSPORT_PLUGINS)
 foreach(vendor ${plumb_transport_plugins})

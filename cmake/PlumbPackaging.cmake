@@ -54,7 +54,7 @@ set(CPACK_COMPONENT_COMMON_DESCRIPTION "plumb libraries, the plumb command-line 
 # `plumb security create-keystore/create-identity/create-permissions` run the openssl program; the
 # rest of plumb does not, so it is recommended rather than required (without it those commands say
 # to install it).
-set(CPACK_DEBIAN_COMMON_PACKAGE_RECOMMENDS "openssl")
+set(CPACK_DEBIAN_COMMON_PACKAGE_RECOMMENDS "openssl, python3-matplotlib")
 set(CPACK_DEBIAN_TOOL_PACKAGE_NAME plumb-tool)
 set(CPACK_DEBIAN_TOOL_PACKAGE_DEPENDS "plumb-common ${plumb_exact}, ${plumb_any_transport}")
 set(CPACK_COMPONENT_TOOL_DESCRIPTION "plumb for the tool computer: hardware bridge (plumb-bridge) and simulated platform (plumb-sim)")

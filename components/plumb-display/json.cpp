@@ -80,6 +80,12 @@ std::string station_json(const topics::SurveyStation& s, const std::string& key)
   j["e"] = json_number(s.east_m, 2);
   j["tvd"] = json_number(s.tvd_m, 2);
   j["dls"] = json_number(s.dls_deg_per_30m, 2);
+  j["vs"] = json_number(s.vertical_section_m, 2);
+  j["maj"] = json_number(s.ellipse_major_sd_m, 3);
+  j["mnr"] = json_number(s.ellipse_minor_sd_m, 3);
+  j["maz"] = json_number(s.ellipse_major_azimuth_deg, 1);
+  j["sdt"] = json_number(s.tvd_sd_m, 3);
+  j["tf"] = json_number(s.gravity_toolface_deg, 1);
   j["flags"] = s.flags;
   j["qc"] = s.qc_reason;
   return json_text(j);

@@ -8,6 +8,7 @@
 
 #include "plumb/components/convert.hpp"
 #include "plumb/components/status_reporter.hpp"
+#include "plumb/survey/detector_report.hpp"
 #include "plumb/transport/topic_names.hpp"
 #include "attitude_continuity.hpp"
 #include "station_message.hpp"
@@ -17,6 +18,7 @@ namespace plumb::survey_component {
 namespace {
 
 constexpr const char* kProgram = "plumb-survey";
+constexpr int kSilenceFlushS = 3;  // attitude silence after which a stop in progress gets its station
 using Clock = std::chrono::steady_clock;
 
 void print_row(const survey::SurveyRow& r, const char* what) {
@@ -40,7 +42,7 @@ std::string topic_safe(std::string s) {
 int run_live_survey(const LiveOptions& o) {
   if (o.tool_id.empty()) throw std::invalid_argument("--tool-id is required: it names the tool surveyed and its topic");
   if (o.file.empty()) throw std::invalid_argument("--file is required: the survey is kept there across restarts");
-  survey::Survey result(components::make_survey_options(o.survey));
+  survey::Survey result(components::make_survey_options(o.survey, o.estimator));
   const double depth_sd = o.survey.depth_sd_m;
   const auto note = [](const std::string& n) { std::cerr << kProgram << ": " << n << std::endl; };
   SurveyStore store(o.file, result, note);
@@ -99,6 +101,7 @@ int run_live_survey(const LiveOptions& o) {
                                    {"moving_windows", c.moving_windows},
                                    {"no_depth_windows", c.no_depth_windows},
                                    {"same_stop_windows", c.same_stop_windows},
+                                   {"combined_windows", c.combined_windows},
                                    {"repeat_stops", c.repeat_stops},
                                    {"depth_messages", depth_messages},
                                    {"other_tool_messages", other_tool},
@@ -114,6 +117,7 @@ int run_live_survey(const LiveOptions& o) {
   // Until the first attitude of this tool: what the survey waits for, at 3 s, 6 s, 12 s..., with the
   // tool ids it hears instead (a --tool-id that no one publishes would otherwise wait in silence).
   bool heard_tool = false;
+  auto last_attitude = Clock::now();
   std::set<std::string> other_tool_ids;
   double next_silence_note_s = 3;
   const auto other_tool_message = [&](const std::string& id) {
@@ -157,7 +161,10 @@ int run_live_survey(const LiveOptions& o) {
       ++depth_messages;
       detector.add_depth(from_topic(d));
     }
+    // The run ended (or the estimator stopped) during a stop: its station is due, not held forever.
+    if (detector.stop_open() && Clock::now() - last_attitude > std::chrono::seconds(kSilenceFlushS)) detector.flush();
     while (attitude.take(a)) {
+      last_attitude = Clock::now();
       if (!a.tool_id.empty() && a.tool_id != o.tool_id) {
         other_tool_message(a.tool_id);
         continue;
@@ -169,6 +176,9 @@ int run_live_survey(const LiveOptions& o) {
     }
     if (status.due()) status.publish(refused ? "degraded" : "running", counters(), last_error);
   }
+  // The stop in progress when asked to stop has its station now: its windows are all there are.
+  if (!enough()) detector.flush();
+  if (result.rows().empty()) note(survey::no_station_advice(detector.counters(), o.estimator, detector.still_tolerance_m()));
   status.publish("stopping", counters(), last_error);
   std::cerr << kProgram << ": " << result.rows().size() << " station(s) (" << store.resumed() << " resumed), "
             << result.failed_qc() << " failed QC, " << refused << " refused" << std::endl;

@@ -12,7 +12,7 @@ namespace plumb::survey_component {
 struct LiveOptions {
   components::TransportOptions transport;
   components::SurveyCliOptions survey;
-  std::string estimator = "static";  // reads plumb/attitude/<estimator>
+  std::string estimator = "compensated";  // reads plumb/attitude/<estimator>: fits a turning or standing tool
   std::string attitude_topic;        // overrides the estimator's topic
   std::string tool_id;               // the tool surveyed: its attitude and depth; names plumb/survey/<tool>
   std::string file;                  // the survey file (required)

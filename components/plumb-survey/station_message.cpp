@@ -47,6 +47,11 @@ topics::SurveyStation to_topic(const survey::SurveyRow& r) {
   m.dip_residual_deg = r.qc.dip_residual_deg;
   m.flags = (r.qc.pass ? topics::SURVEY_QC_PASSED : 0u) | (s.azimuth_valid ? topics::SURVEY_AZIMUTH_VALID : 0u);
   m.qc_reason = bounded(r.qc.reason, topics::SurveyStation::kQcReasonMax);
+  m.gravity_toolface_deg = s.toolface_deg;
+  m.toolface_sd_deg = s.toolface_sd_deg;
+  m.inclination_total_sd_deg = r.inclination_total_sd_deg;
+  m.azimuth_total_sd_deg = r.azimuth_total_sd_deg;
+  m.error_model = bounded(r.error_model, topics::SurveyStation::kErrorModelMax);
   return m;
 }
 

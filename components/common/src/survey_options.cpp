@@ -1,11 +1,13 @@
 #include "plumb/components/survey_options.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
 
 #include "plumb/core/number.hpp"
 #include "plumb/csv/files.hpp"
+#include "plumb/survey/tool_code_file.hpp"
 
 namespace plumb::components {
 
@@ -33,8 +35,9 @@ void add_survey_options(CLI::App& app, SurveyCliOptions& o) {
   app.add_option("--tie-in", o.tie_in, "position of the first station: NORTH,EAST,TVD in m (default 0,0,0)")
       ->delimiter(',')
       ->expected(3);
-  app.add_option("--depth-sd", o.depth_sd_m, "standard deviation of each station's measured depth, m (default: what the "
-                                             "depth input reports, or 0)");
+  app.add_option("--depth-sd", o.depth_sd_m, "standard deviation of one depth report, m: each station's depth sigma "
+                                             "and how far a standing depth may wander (default: what the depth input "
+                                             "reports, or measured from the reports' second differences)");
   app.add_option("--depth-scale-sd", o.depth_scale_sd, "depth scale factor uncertainty, relative (systematic term DSF)")
       ->capture_default_str();
   app.add_option("--axial-bias-sd", o.axial_bias_sd_uT, "axial magnetometer bias / drill-string interference "
@@ -43,7 +46,19 @@ void add_survey_options(CLI::App& app, SurveyCliOptions& o) {
   app.add_option("--axial-accel-bias-sd", o.axial_accel_bias_sd, "axial accelerometer bias uncertainty, m/s^2 "
                                                                    "(systematic term ABZ)")
       ->capture_default_str();
-  app.add_option("--still-tolerance", o.still_tolerance_m, "depth change within a window that still counts as a stop, m")
+  app.add_option("--error-model", o.error_model,
+                 "position uncertainty: the ISCWSA MWD model with a built-in tool code (MWD = MWD:rev5.1, the OWSG "
+                 "revision 5.1 values; MWD:rev5 the ISCWSA revision 5 workbooks' (DEC-OH 0.20 deg); MWD:rev4; "
+                 "MWD+IFR1), a tool code file (code,weight_function,magnitude,unit,propagation), plumb (plumb's own "
+                 "terms, --axial-bias-sd and the like), or auto (MWD for a magnetic survey, plumb for the strapdown "
+                 "navigator's)")
+      ->capture_default_str();
+  app.add_option("--still-tolerance", o.still_tolerance_m, "depth change within a window that still counts as a stop, "
+                                                          "m, at least (6.5 depth sigmas when the depth is noisier)")
+      ->capture_default_str();
+  app.add_option("--stop-station", o.stop_station, "a station from every valid window of a stop (whole) or from its "
+                                                   "first valid window (first)")
+      ->check(CLI::IsMember({"whole", "first"}))
       ->capture_default_str();
   app.add_option("--min-still", o.min_still_s, "the depth must have stood this long before a window's end, s")
       ->capture_default_str();
@@ -56,8 +71,27 @@ void add_survey_options(CLI::App& app, SurveyCliOptions& o) {
   app.add_option("--start-md", o.start_md_m, "pipe tally: measured depth of the first stop, m")->capture_default_str();
 }
 
-survey::SurveyOptions make_survey_options(const SurveyCliOptions& o) {
+namespace {
+
+std::optional<survey::iscwsa::ToolCode> tool_code(const std::string& name, const std::string& estimator) {
+  if (name == "plumb" || (name == "auto" && estimator == "strapdown")) return std::nullopt;
+  if (name == "auto") return survey::iscwsa::builtin_tool_code("MWD");
+  const auto builtin = survey::iscwsa::builtin_tool_codes();
+  if (std::find(builtin.begin(), builtin.end(), name) != builtin.end()) return survey::iscwsa::builtin_tool_code(name);
+  std::ifstream in(name);
+  if (!in) {
+    std::string names;
+    for (const auto& n : builtin) names += ", " + n;
+    throw std::invalid_argument("--error-model '" + name + "': no such tool code file (built in: auto, plumb" + names + ")");
+  }
+  return survey::iscwsa::read_tool_code(in, name);
+}
+
+}  // namespace
+
+survey::SurveyOptions make_survey_options(const SurveyCliOptions& o, const std::string& estimator) {
   survey::SurveyOptions s;
+  s.tool_code = tool_code(o.error_model, estimator);
   s.reference = *survey::parse_azimuth_reference(o.reference);
   if (!o.reference_file.empty()) {
     std::ifstream in(o.reference_file);
@@ -154,6 +188,8 @@ survey::DetectorOptions make_detector_options(const SurveyCliOptions& o) {
   d.still_tolerance_m = o.still_tolerance_m;
   d.new_station_m = o.new_station_m;
   d.min_still_s = o.min_still_s;
+  d.depth_sd_m = o.depth_sd_m;
+  d.whole_stop = o.stop_station != "first";
   if (!(d.min_still_s >= 0)) throw std::invalid_argument("--min-still must be >= 0");
   if (!(d.still_tolerance_m > 0) || !(d.new_station_m > 0))
     throw std::invalid_argument("--still-tolerance and --new-station must be > 0");

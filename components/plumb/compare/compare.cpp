@@ -8,6 +8,7 @@
 
 #include "compare/compare_file.hpp"
 #include "messages/fields.hpp"
+#include "plots/plot_runner.hpp"
 #include "plumb/compare/compare.hpp"
 #include "plumb/compare/drilling.hpp"
 #include "plumb/components/cli.hpp"
@@ -87,11 +88,13 @@ int run_drilling(const CompareOptions& o, bool estimators_given) {
   compare::write_drilling_report(std::cout, runs);
   if (!o.plots_dir.empty()) {
     std::filesystem::create_directories(o.plots_dir);
-    const std::string path = o.plots_dir + "/drilling_errors.svg";
-    std::ofstream f(path);
-    if (!f) throw std::runtime_error("cannot write '" + path + "'");
-    compare::write_drilling_plot(f, runs);
-    std::cerr << "plumb compare: wrote " << path << '\n';
+    const std::string path = o.plots_dir + "/drilling_errors.csv";
+    {
+      std::ofstream f(path);
+      if (!f) throw std::runtime_error("cannot write '" + path + "'");
+      compare::write_drilling_errors_csv(f, runs);
+    }
+    run_plot("drilling", path, o.plots_dir + "/drilling_errors.png");
   }
   return 0;
 }
@@ -126,18 +129,13 @@ int run(const CompareOptions& o) {
   }
   if (!o.plots_dir.empty()) {
     std::filesystem::create_directories(o.plots_dir);
-    for (double rpm : o.rpms) {
-      for (double snr : o.snr_accel) {
-        for (bool inc : {false, true}) {
-          const std::string path = o.plots_dir + "/" + (inc ? "inclination" : "azimuth") + "_error_" +
-                                   format_number(rpm) + "rpm_snr" + format_number(snr) + "dB.svg";
-          std::ofstream f(path);
-          if (!f) throw std::runtime_error("cannot write '" + path + "'");
-          compare::write_svg_plot(f, result, {rpm, snr, inc});
-          std::cerr << "plumb compare: wrote " << path << '\n';
-        }
-      }
+    const std::string path = o.plots_dir + "/azimuth_points.csv";
+    {
+      std::ofstream f(path);
+      if (!f) throw std::runtime_error("cannot write '" + path + "'");
+      compare::write_azimuth_points_csv(f, result);
     }
+    run_plot("compare-grid", path, o.plots_dir);
   }
   return 0;
 }
@@ -167,7 +165,7 @@ void add_compare_verb(CLI::App& app, Verbs& verbs) {
   cmd->add_option("--accel-bias", o->accel_bias, "accelerometer bias x,y,z, m/s^2");
   cmd->add_option("--mag-bias", o->mag_bias, "magnetometer bias x,y,z, uT");
   components::add_param_option(*cmd, o->params);
-  cmd->add_option("--plots", o->plots_dir, "write SVG plots of error versus azimuth per inclination into this folder");
+  cmd->add_option("--plots", o->plots_dir, "draw error versus azimuth per inclination (or the drilling runs' errors over time) into this folder as PNG, with their data as CSV (plumb-plot, python3-matplotlib)");
   cmd->add_option("--csv", o->csv_path, "also write the table as CSV");
   cmd->add_option("--scenario", o->scenario,
                   "platform: the rotating-platform grid; drilling: 16-minute drilling runs through a navigator "

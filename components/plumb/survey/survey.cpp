@@ -1,8 +1,11 @@
 // plumb survey: the survey offline. From a sensor CSV (through an estimator, stations at the stops
 // the measured depth shows, or a pipe tally), from an attitude CSV and a depth log, or from a
-// station list, to the survey CSV (docs/surveys.md) and an SVG plan and section.
+// station list, to the survey CSV (docs/surveys.md) and a plan and section drawn by plumb-plot.
+#include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -10,10 +13,11 @@
 #include "plumb/components/survey_options.hpp"
 #include "plumb/csv/files.hpp"
 #include "plumb/estimator/loader.hpp"
+#include "plumb/survey/detector_report.hpp"
 #include "plumb/survey/multi_station.hpp"
 #include "plumb/survey/survey_file.hpp"
 #include "plumb/survey/survey_inputs.hpp"
-#include "survey/survey_plot.hpp"
+#include "plots/plot_runner.hpp"
 #include "verbs.hpp"
 
 namespace plumb::cli {
@@ -21,7 +25,7 @@ namespace {
 
 struct SurveyCommandOptions {
   std::string sensor, attitude, depth, stations;
-  std::string estimator = "static";
+  std::string estimator = "compensated";
   double window_s = 5;
   std::vector<std::string> params;
   std::string output, plot;
@@ -52,17 +56,24 @@ void from_sensor_csv(const SurveyCommandOptions& o, survey::StationDetector& det
   const auto take = [&](const estimator::Runner::Slot&, Estimate& e) { detector.add_attitude(e, ""); };
   std::vector<Sample> chunk;
   Sample s;
-  double last_depth_t = -1e300;
+  // A rig's report is a depth that differs from the row before, or the first after rows without
+  // one (a report held on every row counts once; an empty cell between reports is no report); a
+  // standing, quantized depth that repeats is said again once a second so that windows see it.
+  double last_depth_t = -1e300, last_depth = std::numeric_limits<double>::quiet_NaN();
+  bool row_had_depth = false;
   const auto push = [&] {
     runner.push(chunk, take);
     chunk.clear();
   };
   while (reader.next(s)) {
     // The depth goes in before the samples: a window is decided once the depth after it is known.
-    if ((s.flags & flags::kHasDepth) && s.t - last_depth_t >= 0.1) {
+    const bool has_depth = (s.flags & flags::kHasDepth) != 0;
+    if (has_depth && (!row_had_depth || s.depth_m != last_depth || s.t - last_depth_t >= 1.0)) {
       detector.add_depth({s.t, s.depth_m, 0, false});
       last_depth_t = s.t;
+      last_depth = s.depth_m;
     }
+    row_had_depth = has_depth;
     chunk.push_back(s);
     if (chunk.size() == 1024) push();
   }
@@ -75,7 +86,7 @@ int run_survey(const SurveyCommandOptions& o) {
   if (inputs != 1) throw std::invalid_argument("give exactly one of --input (sensor CSV), --attitude, --stations");
   if (!o.attitude.empty() && o.depth.empty() && !o.survey.pipe_length_m && o.survey.tally_file.empty())
     throw std::invalid_argument("--attitude needs --depth (a depth log), or --pipe-length or --tally (a pipe tally)");
-  survey::Survey result(components::make_survey_options(o.survey));
+  survey::Survey result(components::make_survey_options(o.survey, o.sensor.empty() ? "" : o.estimator));
   const Collector collect{result, o.survey.depth_sd_m};
   std::vector<std::string> notes;
   survey::StationDetector detector(components::make_detector_options(o.survey), collect,
@@ -102,20 +113,28 @@ int run_survey(const SurveyCommandOptions& o) {
   const std::string text = survey::survey_text(result);
   if (o.output.empty()) std::cout << text;
   else survey::write_file_atomically(o.output, text);
-  if (!o.plot.empty()) {
-    std::ostringstream svg;
-    write_survey_svg(svg, result);
-    survey::write_file_atomically(o.plot, svg.str());
-  }
   for (const auto& n : notes) std::cerr << "plumb survey: " << n << '\n';
   const auto& c = detector.counters();
   std::cerr << "plumb survey: " << result.rows().size() << " station(s), " << result.failed_qc() << " failed QC";
-  if (o.stations.empty())
-    std::cerr << " (" << c.windows << " attitude windows: " << c.invalid_windows << " invalid, " << c.moving_windows
-              << " while the depth moved, " << c.same_stop_windows << " more in a stop, " << c.repeat_stops
-              << " repeated stop(s))";
+  if (o.stations.empty()) std::cerr << " (" << survey::describe_windows(c) << ")";
   std::cerr << '\n';
-  if (result.rows().empty()) throw std::runtime_error("no station found in the input");
+  if (o.stations.empty() && std::isfinite(detector.depth_sd_m()) && (!o.depth.empty() || !o.sensor.empty()))
+    std::cerr << "plumb survey: depth sigma " << detector.depth_sd_m() << " m ("
+              << (o.survey.depth_sd_m >= 0 ? "stated" : "measured") << "), still tolerance " << detector.still_tolerance_m()
+              << " m\n";
+  if (result.rows().empty())
+    throw std::runtime_error(o.stations.empty() ? survey::no_station_advice(c, o.estimator, detector.still_tolerance_m())
+                                                : "no station found in the input");
+  if (!o.plot.empty()) {
+    // The plot is drawn from the survey file; without -o, from a copy beside the plot.
+    std::string csv = o.output;
+    if (csv.empty()) {
+      csv = o.plot + ".survey.csv";
+      survey::write_file_atomically(csv, text);
+    }
+    run_plot("survey", csv, o.plot);
+    if (o.output.empty()) std::filesystem::remove(csv);
+  }
   // Multi-station analysis: reported, not applied (the survey keeps what was measured).
   std::vector<survey::Station> measured;
   for (const auto& row : result.rows()) measured.push_back(row.station);
@@ -133,7 +152,7 @@ int run_survey(const SurveyCommandOptions& o) {
 void add_survey_verb(CLI::App& app, Verbs& verbs) {
   auto o = std::make_shared<SurveyCommandOptions>();
   auto* cmd = app.add_subcommand("survey", "Survey offline: stations at the stops, QC, minimum curvature, uncertainty; "
-                                           "survey CSV and SVG plot (docs/surveys.md)");
+                                           "survey CSV and plot (docs/surveys.md)");
   cmd->add_option("-i,--input", o->sensor, "sensor CSV with depth_m (or with --pipe-length), run through --estimator");
   cmd->add_option("--attitude", o->attitude, "attitude CSV (docs/conventions.md), with --depth or --pipe-length");
   cmd->add_option("--depth", o->depth, "depth log CSV: t,depth_m[,depth_sd_m] on the attitude's clock");
@@ -145,7 +164,8 @@ void add_survey_verb(CLI::App& app, Verbs& verbs) {
       ->capture_default_str();
   components::add_param_option(*cmd, o->params);
   cmd->add_option("-o,--output", o->output, "survey CSV to write (default: standard output); written whole or not at all");
-  cmd->add_option("--plot", o->plot, "SVG plan and vertical section to write");
+  cmd->add_option("--plot", o->plot, "plan view and vertical section to draw (with plumb-plot and python3-matplotlib): "
+                                     "FILE.png, .svg or .pdf");
   components::add_survey_options(*cmd, o->survey);
   verbs.add(cmd, [o] { return run_survey(*o); });
 }

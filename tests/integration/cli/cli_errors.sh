@@ -6,7 +6,7 @@ bin=$1
 export PLUMB_DOMAIN_ID=$2
 . "$(dirname "$0")/../lib.sh"
 
-for exe in plumb plumb-sim plumb-estimator plumb-bridge plumb-calibrate plumb-survey plumb-wits plumb-wits-send; do
+for exe in plumb plumb-plot plumb-sim plumb-estimator plumb-bridge plumb-calibrate plumb-survey plumb-wits plumb-wits-send; do
   if [ -x "$bin/$exe" ]; then
     "$bin/$exe" --help > /dev/null 2>&1 && pass "$exe --help" || fail "$exe --help"
   else

@@ -26,6 +26,7 @@ expect_usage "plumb-estimator: no plugin" "^plumb-estimator: .*--plugin.*require
 expect_usage "plumb-bridge: unknown option" "^plumb-bridge: .*--nosuch" "$bin/plumb-bridge" --nosuch
 expect_usage "plumb-calibrate: bad procedure" "^plumb-calibrate: .*procedure" "$bin/plumb-calibrate" --procedure 7pos
 expect_usage "example subscriber: unknown option" "^plumb-example-subscriber: .*--nosuch" "$bin/plumb-example-subscriber" --nosuch
+expect_usage "plumb-plot: unknown plot" "^plumb-plot: .*bogus" "$bin/plumb-plot" bogus
 expect_usage "C listener: unknown option" "^plumb-c-attitude-listener: .*--nosuch" "$bin/plumb-c-attitude-listener" --nosuch
 expect_usage "C listener: another vendor" "Cyclone DDS only" "$bin/plumb-c-attitude-listener" --transport fastdds
 expect_usage "C listener: bad PLUMB_DOMAIN_ID" "PLUMB_DOMAIN_ID" env PLUMB_DOMAIN_ID=abc "$bin/plumb-c-attitude-listener"

@@ -72,7 +72,7 @@ grep -qE '^compensated .*\| error inc' "$work/log.txt" &&
 grep -qE '^static .*INVALID: ' "$work/log.txt" &&
   pass "the static plugin printed its reason instead of angles" || fail "no INVALID line with a reason"
 [ "$(wc -l < "$work/att.csv" 2>/dev/null)" -ge 3 ] && pass "plumb estimate wrote att.csv" || fail "att.csv missing or empty"
-ls "$work"/plots/*.svg > /dev/null 2>&1 && pass "plumb compare wrote plots" || fail "no plots/*.svg"
+ls "$work"/plots/*.png > /dev/null 2>&1 && pass "plumb compare drew plots" || fail "no plots/*.png"
 head -1 "$work/capture.csv" 2>/dev/null | grep -qE '(^|,)t,fx,fy,fz,bx,by,bz(,|$)' &&
   pass "a sensor capture is a sensor CSV: $(head -1 "$work/capture.csv")" || fail "capture.csv header: $(head -1 "$work/capture.csv" 2>/dev/null)"
 [ -s "$work/coeffs.txt" ] && pass "calibration wrote coeffs.txt before the bridge read it" || fail "no coeffs.txt"

@@ -14,7 +14,7 @@ start_work_with_programs
 cmake --install "$build" --prefix "$work/first" > "$work/install.log" 2>&1 || { cat "$work/install.log"; fail "cmake --install"; finish; }
 mv "$work/first" "$work/moved"
 prefix=$work/moved
-for f in bin/plumb bin/plumb-bridge bin/plumb-sim bin/plumb-estimator bin/plumb-calibrate bin/plumb-survey \
+for f in bin/plumb bin/plumb-plot bin/plumb-bridge bin/plumb-sim bin/plumb-estimator bin/plumb-calibrate bin/plumb-survey \
          lib/libplumb_plugin.so lib/libplumb_transport_cyclonedds.so lib/libplumb_transport_fastdds.so \
          lib/libplumb_estimator_compensated.so lib/libplumb_estimator_static.so lib/libplumb_estimator_integral.so \
          lib/libplumb_estimator_strapdown.so share/plumb/idl/attitude.idl share/plumb/idl/sensor.idl \

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Surveys offline: `plumb survey` on the simulator's stop-and-go drilling run (sensor CSV with
-# measured depth, through the static estimator) and on a station list; the survey CSV and SVG
-# written whole; bad inputs refused with one line: depth backwards, a duplicate station, an angle
+# measured depth, through the default estimator) and on a station list; the survey CSV written
+# whole and its plot drawn (PNG); bad inputs refused with one line: depth backwards, a duplicate station, an angle
 # out of range, a missing reference, a true survey without declination.
 # usage: survey_offline.sh BIN_DIR
 set -euo pipefail
@@ -14,12 +14,12 @@ ref=(--gravity 9.80665 --total-field 50 --dip 60)
 
 "$bin/plumb-sim" --scenario drilling-survey --csv "$work/run" > /dev/null
 if "$bin/plumb" survey --input "$work/run/sensor.csv" "${ref[@]}" --reference true --declination 4 \
-     -o "$work/survey.csv" --plot "$work/survey.svg" 2> "$work/survey.err"; then
+     -o "$work/survey.csv" --plot "$work/survey.png" 2> "$work/survey.err"; then
   pass "plumb survey on a sensor CSV: $(tail -1 "$work/survey.err")"
 else
   fail "plumb survey failed: $(cat "$work/survey.err")"
 fi
-python3 - "$work/survey.csv" "$work/run/truth.csv" <<'PY' && pass "seven stations at the stops, true azimuths, QC passed" || fail "survey CSV content"
+python3 - "$work/survey.csv" "$work/run/truth.csv" <<'PY' && pass "seven stations at the stops (every window of each), true azimuths, QC passed, ISCWSA MWD sigmas" || fail "survey CSV content"
 import csv, sys
 rows = list(csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith('#')))
 truth = list(csv.DictReader(open(sys.argv[2])))
@@ -29,9 +29,15 @@ assert all(r["azimuth_reference"] == "true" and r["qc"] == "pass" for r in rows)
 # true = magnetic + 4 deg; the simulated azimuth is magnetic.
 for r in rows:
     assert abs((float(r["azimuth_deg"]) - float(r["magnetic_azimuth_deg"]) - 4 + 180) % 360 - 180) < 1e-9
+# A 30 s stop through 5 s windows: five or more windows a station (the alignment's 60 s: more).
+assert all(int(r["windows"]) >= 5 for r in rows), [r["windows"] for r in rows]
+# The MWD model's total sigma of a station's angles is far above its measured noise.
+assert all(float(r["inclination_total_sd_deg"]) > 3 * float(r["inclination_sd_deg"]) for r in rows)
+assert all(r["error_model"].startswith("MWD") for r in rows)
+assert all(r["gravity_toolface_deg"] not in ("", "nan") for r in rows)
 PY
 # The same run as an attitude CSV and a depth log: the same stations.
-"$bin/plumb" estimate --estimator static --input "$work/run/sensor.csv" --window 5 --output "$work/att.csv" 2> /dev/null
+"$bin/plumb" estimate --estimator compensated --input "$work/run/sensor.csv" --window 5 --output "$work/att.csv" 2> /dev/null
 python3 - "$work/run/sensor.csv" "$work/depth.csv" <<'PY'
 import csv, sys
 rows = csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith('#'))
@@ -76,7 +82,7 @@ want = [100, 101.51, 103, 104.5, 105.98, 107.5, 109]
 got = [float(r["md_m"]) for r in rows]
 assert len(got) == 7 and all(abs(g - w) < 1e-9 for g, w in zip(got, want)), got
 PY
-if grep -q "<svg" "$work/survey.svg" && grep -q "</svg>" "$work/survey.svg"; then pass "SVG plot written"; else fail "no SVG"; fi
+if [ "$(head -c 4 "$work/survey.png" | tail -c 3)" = "PNG" ]; then pass "plot drawn (PNG)"; else fail "no PNG plot"; fi
 if [ ! -e "$work/survey.csv.tmp" ]; then pass "no temporary file left"; else fail "survey.csv.tmp left behind"; fi
 
 printf 'md_m,inclination_deg,azimuth_deg\n100,10,20\n110,12,22\n105,13,23\n' > "$work/backwards.csv"

@@ -40,9 +40,9 @@ TEST(CompareLibrary, RunsTheGridWithProgress) {
   }
 }
 
-TEST(CompareLibrary, WritesTableCsvAndSvg) {
+TEST(CompareLibrary, WritesTableCsvAndPlotData) {
   const CompareResult r = run_compare(small());
-  std::ostringstream table, csv, svg, empty;
+  std::ostringstream table, csv, points;
   write_report(table, r);
   EXPECT_NE(table.str().find("compensated"), std::string::npos);
   EXPECT_NE(table.str().find("platform rotating"), std::string::npos);
@@ -52,16 +52,12 @@ TEST(CompareLibrary, WritesTableCsvAndSvg) {
   std::size_t lines = 0;
   for (char ch : csv.str()) lines += ch == '\n';
   EXPECT_EQ(lines, 1u + 2 * 3);
-  write_svg_plot(svg, r, {60, 20, false});
-  const std::string s = svg.str();
-  EXPECT_EQ(s.rfind("<svg", 0), 0u);
-  EXPECT_NE(s.find("</svg>"), std::string::npos);
-  // Two panels, two drawable plugins each (static has no valid point).
-  std::size_t polylines = 0;
-  for (std::size_t p = s.find("<polyline"); p != std::string::npos; p = s.find("<polyline", p + 1)) ++polylines;
-  EXPECT_EQ(polylines, 4u);
-  write_svg_plot(empty, r, {300, 20, true});
-  EXPECT_NE(empty.str().find("no case"), std::string::npos);
+  // The plot's data: one row per case, plugin and azimuth (2 cases, 3 plugins, 4 azimuths).
+  write_azimuth_points_csv(points, r);
+  lines = 0;
+  for (char ch : points.str()) lines += ch == '\n';
+  EXPECT_EQ(lines, 1u + 2 * 3 * 4);
+  EXPECT_EQ(points.str().rfind("inclination_deg,rpm,snr_accel_db,plugin,azimuth_deg,", 0), 0u);
 }
 
 // The coverage column: RMS of error / reported sd, 1 for honest sds. Far from vertical,

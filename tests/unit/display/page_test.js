@@ -8,8 +8,8 @@ const assert = require("assert");
 const page = fs.readFileSync(process.argv[2], "utf8");
 const begin = page.indexOf("// PURE BEGIN"), end = page.indexOf("// PURE END");
 assert(begin > 0 && end > begin, "the page marks its pure part");
-const {angleText, wrapsAround, LENGTH_UNITS, cardTitle, counterText} = new Function(
-  page.slice(begin, end) + "\nreturn {angleText, wrapsAround, LENGTH_UNITS, cardTitle, counterText};")();
+const {angleText, wrapsAround, LENGTH_UNITS, cardTitle, counterText, tickStep} = new Function(
+  page.slice(begin, end) + "\nreturn {angleText, wrapsAround, LENGTH_UNITS, cardTitle, counterText, tickStep};")();
 
 let checks = 0;
 const check = (ok, what) => { assert(ok, what); ++checks; };
@@ -31,6 +31,10 @@ check(!wrapsAround(10, 20) && !wrapsAround(170, 190), "10 -> 20 and 170 -> 190 d
 check(Math.abs(100 * LENGTH_UNITS.ft.perLength - 328.084) < 1e-3, "100 m is 328.084 ft");
 check(LENGTH_UNITS.m.perLength === 1 && LENGTH_UNITS.m.perDls === 1, "metres are the survey's own unit");
 check(Math.abs(3 * LENGTH_UNITS.ft.perDls - 3.048) < 1e-9, "3 deg/30 m is 3.048 deg/100 ft");
+
+// The plan and section's ticks: 1, 2 or 5 times a power of ten, about five to a span.
+check(tickStep(10) === 2 && tickStep(3) === 1 && tickStep(240) === 50, "tick steps " + [tickStep(10), tickStep(3), tickStep(240)]);
+check(Math.abs(tickStep(0.04) - 0.01) < 1e-15, "tick step of 0.04 m: " + tickStep(0.04));
 
 // Words for people.
 check(cardTitle("sim", "compensated") === "tool sim, compensated estimator", "card name: " + cardTitle("sim", "compensated"));

@@ -6,8 +6,11 @@
 #include <filesystem>
 #include <fstream>
 
+#include <random>
+
 #include <gtest/gtest.h>
 
+#include "plumb/survey/detector_report.hpp"
 #include "plumb/survey/station_detector.hpp"
 #include "plumb/survey/survey.hpp"
 #include "plumb/survey/survey_file.hpp"
@@ -186,6 +189,97 @@ TEST(StationDetector, OneStationPerStopAndARepeatIsSaid) {
   EXPECT_GT(run.detector.counters().moving_windows, 20u);
 }
 
+TEST(StationDetector, EveryWindowOfAStopMakesItsStation) {
+  // Each window reads the true 30 deg plus an error of +-0.1 deg, alternating, with sigma 0.1 deg:
+  // the station is their mean, its sigma 0.1 / sqrt(windows).
+  std::vector<Station> got;
+  StationDetector d({}, [&](const Station& s) { got.push_back(s); });
+  int k = 0;
+  for (double t = 0; t < 60; t += 2) {
+    for (double td = t; td < t + 2; td += 0.5) d.add_depth({td, t < 40 ? 5.0 : 5.0 + (t - 40) * 0.1, 0.01, false});
+    Estimate e = window(t, t + 2, true);
+    e.inclination_deg = 30 + (k++ % 2 ? 0.1 : -0.1);
+    e.inclination_sd_deg = 0.1;
+    e.azimuth_deg = k % 2 ? 359.9 : 0.1;  // across north
+    e.azimuth_sd_deg = 0.1;
+    d.add_attitude(e, "t1");
+  }
+  d.flush();
+  ASSERT_EQ(got.size(), 1u);
+  // Windows ending at 4 s (the depth log starts with the first) to 40 s: 19 of them, ten at +0.1.
+  EXPECT_EQ(got[0].windows, 19u);
+  EXPECT_NEAR(got[0].inclination_deg, 30 + 0.1 / 19, 1e-9);
+  // 1 / sqrt(sum of weights), widened by the scatter about the mean (chi2 / (n - 1) = 19.9 / 18).
+  const double chi2 = 10 * std::pow(0.1 - 0.1 / 19, 2) / 0.01 + 9 * std::pow(0.1 + 0.1 / 19, 2) / 0.01;
+  EXPECT_NEAR(got[0].inclination_sd_deg, 0.1 / std::sqrt(19.0) * std::sqrt(chi2 / 18), 1e-9);
+  const double az = got[0].magnetic_azimuth_deg > 180 ? got[0].magnetic_azimuth_deg - 360 : got[0].magnetic_azimuth_deg;
+  EXPECT_NEAR(az, 0.1 / 19, 1e-9);
+  EXPECT_EQ(d.counters().combined_windows, 19u);
+}
+
+TEST(StationDetector, NoisyQuantizedDepthHeldBetweenReportsFindsEveryStop) {
+  // The rig's depth: 1 Hz reports with 4 cm of noise, quantized to 1 cm; a window of 2 s every 2 s.
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0, 0.04);
+  StopAndGo run;
+  for (double t = 0; t < 140; t += 2) {
+    for (double td = t; td < t + 2; td += 1) run.detector.add_depth({td, std::round((depth_at(td) + noise(rng)) * 100) / 100, 0, false});
+    run.detector.add_attitude(window(t, t + 2, true), "t1");
+  }
+  run.detector.flush();
+  ASSERT_EQ(run.stations.size(), 3u);
+  EXPECT_NEAR(run.stations[1].md_m, 9.5, 0.05);
+  EXPECT_NEAR(run.stations[2].md_m, 19, 0.05);
+  // The tolerance follows the measured noise (6.5 sigma, about 0.26 m), not the 0.02 m floor.
+  EXPECT_GT(run.detector.still_tolerance_m(), 0.15);
+  EXPECT_LT(run.detector.still_tolerance_m(), 0.4);
+}
+
+TEST(StationDetector, NoStationSaysWhyAndWhatToTry) {
+  // A static estimator on a turning platform: every window invalid, with its reason.
+  std::vector<Station> got;
+  StationDetector d({}, [&](const Station& s) { got.push_back(s); });
+  for (double t = 0; t < 60; t += 2) {
+    d.add_depth({t, 100, 0.01, false});
+    Estimate e = window(t, t + 2, false);
+    e.reason = "platform rotating (31.2 rpm)";
+    d.add_attitude(e, "t1");
+  }
+  d.flush();
+  EXPECT_TRUE(got.empty());
+  const std::string advice = no_station_advice(d.counters(), "static", d.still_tolerance_m());
+  EXPECT_NE(advice.find("30 invalid (30 platform rotating)"), std::string::npos) << advice;
+  EXPECT_NE(advice.find("try -e compensated"), std::string::npos) << advice;
+}
+
+TEST(Survey, IscwsaModelGivesEachStationItsRandomAndTotalSigma) {
+  SurveyOptions o;
+  o.checks = {false, false, false};
+  o.tool_code = iscwsa::builtin_tool_code("MWD");
+  Survey magnetic(o);
+  o.reference = AzimuthReference::True;
+  o.north.declination_known = true;
+  Survey true_north(o);
+  for (int k = 0; k < 5; ++k) {
+    Station s;
+    s.md_m = 100 + 30 * k;
+    s.inclination_deg = 10 + 5 * k;
+    s.magnetic_azimuth_deg = 60;
+    s.inclination_sd_deg = 0.01;
+    s.azimuth_sd_deg = 0.05;
+    magnetic.add(s);
+    true_north.add(s);
+  }
+  const SurveyRow& m = magnetic.rows().back();
+  const SurveyRow& t = true_north.rows().back();
+  EXPECT_GT(m.inclination_total_sd_deg, m.inclination_random_sd_deg);
+  EXPECT_GE(m.inclination_random_sd_deg, 0.01);
+  EXPECT_GT(m.uncertainty.major_sd_m, m.random_uncertainty.major_sd_m);
+  // The declination terms belong to a true (or grid) survey only.
+  EXPECT_GT(t.azimuth_total_sd_deg, m.azimuth_total_sd_deg);
+  EXPECT_EQ(m.error_model.rfind("MWD", 0), 0u);
+}
+
 TEST(StationDetector, WithoutDepthWindowsWaitNoLongerThanTheDepthHistory) {
   StopAndGo run;
   const double history = 600;  // the default depth_history_s
@@ -197,11 +291,11 @@ TEST(StationDetector, WithoutDepthWindowsWaitNoLongerThanTheDepthHistory) {
 
 TEST(StationDetector, ResumedDetectorNeitherRepeatsNorLosesStations) {
   StopAndGo first;
-  feed(first, 0, 50);  // killed during the second stop, after its station
+  feed(first, 0, 66);  // killed while drilling on from the second stop, after its station
   ASSERT_EQ(first.stations.size(), 2u);
   StopAndGo second;
   second.detector.resume(first.stations.back().t_s, first.stations.back().md_m, 2);
-  feed(second, 44, 100);  // restarted: the windows of the same stop come again, then the next stop
+  feed(second, 44, 100);  // restarted: the windows of the stop come again, then the next stop
   second.detector.flush();
   ASSERT_EQ(second.stations.size(), 1u);
   EXPECT_EQ(second.stations[0].md_m, 19);
@@ -219,6 +313,7 @@ TEST(StationDetector, PipeTallyNumbersTheStops) {
     d.add_attitude(window(t, t + 2, still), "t1");
     t += 2;
   }
+  d.flush();  // the last stop is still open: its station comes with the end of the input
   ASSERT_EQ(got.size(), 3u);
   EXPECT_NEAR(got[0].md_m, 100, 1e-12);
   EXPECT_NEAR(got[1].md_m, 109.62, 1e-12);

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -26,7 +27,11 @@ const char* const kColumns[] = {
     "dogleg_deg", "dls_deg_per_30m", "dls_deg_per_100ft", "vertical_section_m", "closure_distance_m",
     "closure_azimuth_deg", "north_sd_m", "east_sd_m", "tvd_sd_m", "ellipse_major_sd_m", "ellipse_minor_sd_m",
     "ellipse_major_azimuth_deg", "cov_nn", "cov_ne", "cov_nd", "cov_ee", "cov_ed", "cov_dd", "total_g_mps2",
-    "total_b_uT", "dip_deg", "g_residual_mps2", "b_residual_uT", "dip_residual_deg", "qc", "qc_reason"};
+    "total_b_uT", "dip_deg", "g_residual_mps2", "b_residual_uT", "dip_residual_deg", "gravity_toolface_deg",
+    "toolface_sd_deg", "windows", "inclination_random_sd_deg", "inclination_total_sd_deg", "azimuth_random_sd_deg",
+    "azimuth_total_sd_deg", "random_north_sd_m", "random_east_sd_m", "random_tvd_sd_m", "random_ellipse_major_sd_m",
+    "random_ellipse_minor_sd_m", "reference_g_mps2", "reference_b_uT", "reference_dip_deg", "error_model", "qc",
+    "qc_reason"};
 constexpr std::size_t kColumnCount = sizeof(kColumns) / sizeof(kColumns[0]);
 
 std::string header_line() {
@@ -50,6 +55,8 @@ std::string num(double v) {
   const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
   return ec == std::errc() ? std::string(buffer, end) : "nan";
 }
+
+std::string optional_num(const std::optional<double>& v) { return v ? num(*v) : "nan"; }
 
 void throw_errno(const std::string& what, const std::string& path) {
   throw std::runtime_error(what + " '" + path + "': " + std::strerror(errno));
@@ -109,7 +116,14 @@ std::string survey_row_line(const SurveyRow& r) {
     << num(u.major_azimuth_deg) << ',' << num(c(0, 0)) << ',' << num(c(0, 1)) << ',' << num(c(0, 2)) << ','
     << num(c(1, 1)) << ',' << num(c(1, 2)) << ',' << num(c(2, 2)) << ',' << num(s.total_g_mps2) << ','
     << num(s.total_b_uT) << ',' << num(s.dip_deg) << ',' << num(q.gravity_residual_mps2) << ','
-    << num(q.total_b_residual_uT) << ',' << num(q.dip_residual_deg) << ',' << (q.pass ? "pass" : "fail") << ','
+    << num(q.total_b_residual_uT) << ',' << num(q.dip_residual_deg) << ',' << num(s.toolface_deg) << ','
+    << num(s.toolface_sd_deg) << ',' << s.windows << ',' << num(r.inclination_random_sd_deg) << ','
+    << num(r.inclination_total_sd_deg) << ',' << num(r.azimuth_random_sd_deg) << ',' << num(r.azimuth_total_sd_deg)
+    << ',' << num(r.random_uncertainty.north_sd_m) << ',' << num(r.random_uncertainty.east_sd_m) << ','
+    << num(r.random_uncertainty.tvd_sd_m) << ',' << num(r.random_uncertainty.major_sd_m) << ','
+    << num(r.random_uncertainty.minor_sd_m) << ',' << optional_num(r.field.gravity_mps2) << ','
+    << optional_num(r.field.total_b_uT) << ',' << optional_num(r.field.dip_deg) << ',' << field_text(r.error_model)
+    << ',' << (q.pass ? "pass" : "fail") << ','
     << field_text(q.reason.empty() ? r.warning : (r.warning.empty() ? q.reason : q.reason + "; " + r.warning))
     << '\n';
   return o.str();
@@ -165,7 +179,7 @@ LoadedSurvey read_survey_file(const std::string& path) {
     pos = end + 1;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (!format_seen) {
-      if (line != kSurveyFormatLine)
+      if (line != kSurveyFormatLine && line != kSurveyFormatLineV1)
         throw std::runtime_error(where + "not a plumb survey file (first line must be '" + kSurveyFormatLine + "')");
       format_seen = true;
       out.valid_lines = line_no;
@@ -177,14 +191,18 @@ LoadedSurvey read_survey_file(const std::string& path) {
     }
     const auto fields = csv::split_line(line);
     if (col.empty()) {
-      if (line != header_line()) throw std::runtime_error(where + "unexpected column header (not a survey file of this version)");
       for (std::size_t i = 0; i < fields.size(); ++i) col[fields[i]] = i;
+      for (const char* needed : {"station", "t", "tool_id", "source", "md_m", "md_sd_m", "inclination_deg",
+                                 "inclination_sd_deg", "magnetic_azimuth_deg", "azimuth_sd_deg", "azimuth_valid",
+                                 "total_g_mps2", "total_b_uT", "dip_deg", "qc"})
+        if (!col.count(needed))
+          throw std::runtime_error(where + "unexpected column header (no column '" + needed + "': not a survey file)");
       out.valid_lines = line_no;
       continue;
     }
     try {
-      if (fields.size() != kColumnCount)
-        throw std::runtime_error(std::to_string(fields.size()) + " fields, expected " + std::to_string(kColumnCount));
+      if (fields.size() != col.size())
+        throw std::runtime_error(std::to_string(fields.size()) + " fields, expected " + std::to_string(col.size()));
       const auto number = [&](const char* name, bool allow_nan = false) {
         const auto v = parse_number(fields[col.at(name)], allow_nan);
         if (!v || (!allow_nan && !std::isfinite(*v)))
@@ -209,6 +227,11 @@ LoadedSurvey read_survey_file(const std::string& path) {
       s.total_g_mps2 = number("total_g_mps2", true);
       s.total_b_uT = number("total_b_uT", true);
       s.dip_deg = number("dip_deg", true);
+      if (col.count("gravity_toolface_deg")) {
+        s.toolface_deg = number("gravity_toolface_deg", true);
+        s.toolface_sd_deg = number("toolface_sd_deg", true);
+        s.windows = static_cast<std::uint32_t>(number("windows"));
+      }
       const std::string qc = fields[col.at("qc")];
       if (qc != "pass" && qc != "fail") throw std::runtime_error("column 'qc': '" + qc + "' is neither pass nor fail");
       out.stations.push_back(s);

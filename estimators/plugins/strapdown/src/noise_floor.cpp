@@ -29,30 +29,7 @@ void NoiseFloor::add(double t, const Eigen::Vector3d& f, const Eigen::Vector3d& 
     gyro_blocks_.push_back(pooled_sd(block_.w, block_.ww, block_.n) / low);
     block_ = Sums();
   }
-  // A depth report is a row whose depth differs from the row before, or the first after rows
-  // without one: a held report repeats on every row until the next comes. Reports that repeat
-  // exactly (a still tool, quantized) are not counted, which errs towards more noise. The second
-  // difference of successive reports cancels a steady rate of penetration; white noise gives it
-  // a variance of 6 sigma^2.
-  if (!depth) {
-    last_row_had_depth_ = false;
-    return;
-  }
-  const bool report = !last_row_had_depth_ || reports_.empty() || *depth != reports_.back();
-  last_row_had_depth_ = true;
-  if (!report) return;
-  if (reports_.size() == 2) {
-    if (depth_terms_ == 0) depth_t0_ = t;
-    const double d2 = *depth - 2.0 * reports_[1] + reports_[0];
-    depth_sq_ += d2 * d2;
-    depth_terms_ += 1;
-    if (depth_terms_ >= 3 && t - depth_t0_ >= kDepthBlockSeconds) {
-      depth_blocks_.push_back(std::sqrt(depth_sq_ / depth_terms_ / 6.0));
-      depth_sq_ = depth_terms_ = 0;
-    }
-    reports_.erase(reports_.begin());
-  }
-  reports_.push_back(*depth);
+  depth_.add(t, depth);
 }
 
 std::optional<double> NoiseFloor::floor_of(const std::vector<double>& blocks, std::size_t min_blocks) {

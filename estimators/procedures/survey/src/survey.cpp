@@ -1,5 +1,6 @@
 #include "plumb/survey/survey.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -35,6 +36,54 @@ Survey::Survey(SurveyOptions o) : options_(std::move(o)) {
   if (options_.field.total_b_uT) options_.errors.total_b_uT = *options_.field.total_b_uT;
   if (options_.field.dip_deg) options_.errors.dip_deg = *options_.field.dip_deg;
   if (options_.field.gravity_mps2) options_.errors.gravity_mps2 = *options_.field.gravity_mps2;
+  if (options_.tool_code && options_.reference == AzimuthReference::Magnetic) {
+    auto& terms = options_.tool_code->terms;
+    terms.erase(std::remove_if(terms.begin(), terms.end(),
+                               [](const iscwsa::Term& t) { return t.weight_function == "AZ" || t.weight_function == "DBH"; }),
+                terms.end());
+  }
+}
+
+void Survey::add_model_uncertainty(SurveyRow& row) {
+  // The measured noise (each station's sigma from its estimator and its depth sigma) as plumb's
+  // own random terms; the model's terms beside it.
+  ErrorModel noise_only;
+  noise_only.total_b_uT = options_.errors.total_b_uT;
+  noise_only.dip_deg = options_.errors.dip_deg;
+  noise_only.gravity_mps2 = options_.errors.gravity_mps2;
+  const ErrorModel& own = options_.tool_code ? noise_only : options_.errors;
+  const PositionUncertainty measured = propagate_uncertainty(geometry_, sigma_, own).back();
+  const PositionUncertainty measured_random = propagate_uncertainty(geometry_, sigma_, noise_only).back();
+  const Station& s = row.station;
+  double inc_var = s.inclination_sd_deg * s.inclination_sd_deg, azi_var = s.azimuth_sd_deg * s.azimuth_sd_deg;
+  double inc_random = inc_var, azi_random = azi_var;
+  row.uncertainty.covariance = measured.covariance;
+  row.random_uncertainty.covariance = measured_random.covariance;
+  if (options_.tool_code) {
+    std::vector<iscwsa::Station> stations;
+    for (std::size_t k = 0; k < geometry_.size(); ++k) {
+      const PathPoint& p = k < rows_.size() ? rows_[k].point : row.point;
+      const double magnetic = k < rows_.size() ? rows_[k].station.magnetic_azimuth_deg : s.magnetic_azimuth_deg;
+      stations.push_back({geometry_[k].md_m, geometry_[k].inclination_deg, geometry_[k].azimuth_deg, magnetic,
+                          p.tvd_m - options_.tie_in.z()});
+    }
+    iscwsa::Field field;
+    field.gravity_mps2 = options_.errors.gravity_mps2;
+    field.total_b_nT = options_.errors.total_b_uT * 1000.0;
+    field.dip_deg = options_.errors.dip_deg;
+    const iscwsa::Result model = iscwsa::propagate(stations, *options_.tool_code, field);
+    row.uncertainty.covariance += model.total.back();
+    row.random_uncertainty.covariance += model.random.back();
+    const Eigen::Vector2d all = model.angle_variance.back() / (kDeg * kDeg);
+    const Eigen::Vector2d random = model.random_angle_variance.back() / (kDeg * kDeg);
+    inc_var += all(0), azi_var += all(1), inc_random += random(0), azi_random += random(1);
+  }
+  describe_covariance(row.uncertainty);
+  describe_covariance(row.random_uncertainty);
+  row.inclination_total_sd_deg = std::sqrt(inc_var);
+  row.azimuth_total_sd_deg = std::sqrt(azi_var);
+  row.inclination_random_sd_deg = std::sqrt(inc_random);
+  row.azimuth_random_sd_deg = std::sqrt(azi_random);
 }
 
 const SurveyRow& Survey::add(const Station& s) {
@@ -59,6 +108,8 @@ const SurveyRow& Survey::add(const Station& s) {
   row.station = s;
   row.reference = options_.reference;
   row.azimuth_deg = convert_magnetic_azimuth(s.magnetic_azimuth_deg, options_.reference, options_.north);
+  row.field = options_.field;
+  row.error_model = options_.tool_code ? options_.tool_code->name : "plumb";
   row.qc = check_station(s.total_g_mps2, s.total_b_uT, s.dip_deg, options_.field, options_.tolerances, options_.checks);
   if (!s.azimuth_valid) row.warning = "azimuth ill-conditioned (near vertical)";
 
@@ -88,7 +139,7 @@ const SurveyRow& Survey::add(const Station& s) {
   fill_section_and_closure(row.point, options_.section_azimuth_deg);
   // The uncertainty at this station depends on the stations above it only; the whole propagation
   // is O(stations) and a survey holds hundreds, not millions.
-  row.uncertainty = propagate_uncertainty(geometry_, sigma_, options_.errors).back();
+  add_model_uncertainty(row);
   if (!row.qc.pass) ++failed_qc_;
   rows_.push_back(std::move(row));
   return rows_.back();

@@ -31,6 +31,8 @@ struct SurveyCliOptions {
   double still_tolerance_m = 0.02;
   double new_station_m = 0.1;
   double min_still_s = 5;
+  std::string stop_station = "whole";
+  std::string error_model = "auto";    // auto, plumb, a built-in tool code, or a tool code file  // whole: every window of a stop; first: its first valid window
   std::optional<double> pipe_length_m;
   std::string tally_file;  // per stop: joint_m (run in after it), correction_m (added to its depth)
   double start_md_m = 0;
@@ -41,7 +43,10 @@ void add_survey_options(CLI::App& app, SurveyCliOptions& o);
 // Throws std::invalid_argument (a usage error) for options that cannot work, e.g. a true survey
 // without declination, or no reference field for a check that is not skipped; std::runtime_error
 // for an unreadable reference file.
-survey::SurveyOptions make_survey_options(const SurveyCliOptions& o);
+// `estimator` names the estimator that measures the stations: the strapdown navigator's survey is
+// no magnetic survey, and `--error-model auto` gives it plumb's own propagation (ISCWSA's MWD model
+// elsewhere).
+survey::SurveyOptions make_survey_options(const SurveyCliOptions& o, const std::string& estimator = "");
 // Throws std::invalid_argument for bad values, std::runtime_error for an unreadable tally file.
 survey::DetectorOptions make_detector_options(const SurveyCliOptions& o);
 

@@ -110,13 +110,8 @@ CompareResult run_compare(const CompareConfig& config, const ProgressCallback& p
 void write_report(std::ostream& out, const CompareResult& result);
 // The same numbers as CSV (header line first).
 void write_csv(std::ostream& out, const CompareResult& result);
-// Mean azimuth error versus azimuth (like the source paper's figure), one panel per inclination,
-// for the cases matching rpm and snr_accel_db, one curve per plugin, with the +-CRB band.
-struct PlotSelection {
-  double rpm = 60;
-  double snr_accel_db = 20;
-  bool inclination_errors = false;        // plot inclination errors instead of azimuth errors
-};
-void write_svg_plot(std::ostream& out, const CompareResult& result, const PlotSelection& selection);
+// The mean errors per azimuth of every case and plugin, with the bounds (one row each): what
+// plumb-plot compare-grid draws, error versus azimuth per inclination like the source paper's figure.
+void write_azimuth_points_csv(std::ostream& out, const CompareResult& result);
 
 }  // namespace plumb::compare

@@ -61,6 +61,7 @@ std::vector<DrillingRunResult> run_drilling_compare(const DrillingCompareConfig&
 
 void write_drilling_report(std::ostream& out, const std::vector<DrillingRunResult>& runs);
 // Errors over time, six panels (inclination, azimuth, toolface, north, east, down), one curve per run.
-void write_drilling_plot(std::ostream& out, const std::vector<DrillingRunResult>& runs);
+// Each run's errors over time, one row per point: what plumb-plot drilling draws.
+void write_drilling_errors_csv(std::ostream& out, const std::vector<DrillingRunResult>& runs);
 
 }  // namespace plumb::compare

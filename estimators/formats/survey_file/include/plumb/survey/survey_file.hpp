@@ -13,7 +13,9 @@
 
 namespace plumb::survey {
 
-inline constexpr const char* kSurveyFormatLine = "# plumb survey 1";
+inline constexpr const char* kSurveyFormatLine = "# plumb survey 2";
+// Version 1 (no toolface, no random and total sigmas, no reference field columns) is still read.
+inline constexpr const char* kSurveyFormatLineV1 = "# plumb survey 1";
 
 void write_survey_header(std::ostream& out, const SurveyOptions& options);
 void write_survey_row(std::ostream& out, const SurveyRow& row);

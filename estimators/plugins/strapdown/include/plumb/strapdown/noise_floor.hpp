@@ -12,6 +12,8 @@
 
 #include <Eigen/Core>
 
+#include "plumb/core/depth_noise.hpp"
+
 namespace plumb::strapdown {
 
 class NoiseFloor {
@@ -22,15 +24,13 @@ class NoiseFloor {
   // Per-sample standard deviation per axis; none until enough blocks were seen.
   std::optional<double> accel_sd() const { return floor_of(accel_blocks_, kMinBlocks); }
   std::optional<double> gyro_sd() const { return floor_of(gyro_blocks_, kMinBlocks); }
-  std::optional<double> depth_sd() const { return floor_of(depth_blocks_, kMinDepthBlocks); }
+  std::optional<double> depth_sd() const { return depth_.sd(); }
   // Bumped each time a block ends: the caller refreshes what it derives from the floor then.
-  std::size_t blocks() const { return accel_blocks_.size() + depth_blocks_.size(); }
+  std::size_t blocks() const { return accel_blocks_.size() + depth_.blocks(); }
 
   static constexpr double kBlockSeconds = 1.0;       // at least this long ...
   static constexpr double kBlockSamples = 50;        // ... and this many readings
-  static constexpr double kDepthBlockSeconds = 5.0;  // rig reports come about once a second
   static constexpr std::size_t kMinBlocks = 5;
-  static constexpr std::size_t kMinDepthBlocks = 3;
   static constexpr double kQuantile = 0.25;
   static constexpr double kQuantileZ = 0.674;  // the standard normal's 75th percentile
 
@@ -42,11 +42,8 @@ class NoiseFloor {
     double ff = 0, ww = 0;
   };
   Sums block_;
-  std::vector<double> accel_blocks_, gyro_blocks_, depth_blocks_;
-  // Depth: the last two reports, and the second differences in the current depth block.
-  std::vector<double> reports_;
-  bool last_row_had_depth_ = false;
-  double depth_t0_ = 0, depth_sq_ = 0, depth_terms_ = 0;
+  std::vector<double> accel_blocks_, gyro_blocks_;
+  DepthNoiseFloor depth_;
 };
 
 }  // namespace plumb::strapdown

@@ -1,8 +1,10 @@
-// Survey stations from an attitude stream and the rig's measured depth: a station is the first
-// valid attitude window that lies wholly inside a period where the measured depth stood still (a
-// pipe connection or a survey stop), one per stop. Without a depth input, a stop is a run of valid,
-// non-rotating windows, and a pipe tally gives its depth: start + joint lengths, one joint per stop,
-// plus corrections.
+// Survey stations from an attitude stream and the rig's measured depth: a station is every valid
+// attitude window that lies wholly inside a period where the measured depth stood still (a pipe
+// connection or a survey stop), combined into one (stop_combiner.hpp), one per stop. The depth
+// stands still when its reports stay within a tolerance that follows their noise: stated (the depth
+// topic's sigma, --depth-sd) or measured from the reports' second differences (DepthNoiseFloor).
+// Without a depth input, a stop is a run of valid, non-rotating windows, and a pipe tally gives its
+// depth: start + joint lengths, one joint per stop, plus corrections.
 //
 // Time stamps of attitude windows and depth reports are on the same clock (the rig's and the
 // sensors' clock, seconds). The detector is fed in any interleaving; it decides on a window once a
@@ -12,10 +14,12 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "plumb/core/depth_noise.hpp"
 #include "plumb/core/estimate.hpp"
 #include "plumb/survey/survey.hpp"
 
@@ -39,7 +43,10 @@ struct PipeTally {
 };
 
 struct DetectorOptions {
-  double still_tolerance_m = 0.02;   // depth spread within a window that still counts as standing
+  double still_tolerance_m = 0.02;   // depth spread within a window that still counts as standing,
+                                     // at least: kStillSigmas depth sigmas when the depth is noisier
+  double depth_sd_m = -1;            // sigma of one depth report; < 0: the reports' own, or measured
+  bool whole_stop = true;            // false: the first valid window of a stop is its station
   double new_station_m = 0.1;        // a stop closer than this to the last station is the same place
   double max_depth_gap_s = 2.0;      // a window needs depth reports this close to its start and end
   double min_still_s = 5.0;          // the depth must stand this long before a window's end (short
@@ -59,7 +66,19 @@ struct DetectorCounters {
   std::uint64_t repeat_stops = 0;       // a new stop at the last station's depth (a resurvey): not a station
   std::uint64_t old_windows = 0;        // at or before the last station (replayed after a restart)
   std::uint64_t stations = 0;
+  std::uint64_t combined_windows = 0;   // windows that went into the stations
+  std::map<std::string, std::uint64_t> invalid_reasons;  // invalid windows by the estimator's reason
 };
+
+// How many depth sigmas the reports of a standing string may spread: the range of 60 reports of
+// white noise stays below it 99.9 % of the time.
+inline constexpr double kStillSigmas = 6.5;
+// A standing depth also shows no rate: fitted over a span long enough to tell this slow a drilling
+// from standing by 5 sigma (between these bounds), a rate above 2.5 sigma (and above the tolerance
+// over the span) is motion.
+inline constexpr double kSlowestDrillingMps = 0.01;
+inline constexpr double kMinSlopeSpanS = 10;
+inline constexpr double kMaxSlopeSpanS = 30;
 
 class StationDetector {
  public:
@@ -73,22 +92,41 @@ class StationDetector {
   // Decides every pending window with the depth reports there are (end of a file, long silence).
   void flush();
   const DetectorCounters& counters() const { return counters_; }
+  // A stop whose station waits for the depth to move (or for flush()).
+  bool stop_open() const { return stop_.has_value(); }
+  // The depth spread a standing string may show, m, and the depth sigma behind it (NaN: unknown).
+  double still_tolerance_m() const;
+  double depth_sd_m() const;
 
  private:
   struct Pending {
     Estimate e;
     std::string tool_id;
   };
+  struct OpenStop {
+    std::vector<Estimate> windows;
+    std::string tool_id;
+    double md = 0;                 // the first window's median depth: what later windows must match
+    std::vector<double> depths;    // every report inside the windows' spans
+    double md_sd = 0;
+  };
   void process_ready(bool all);
   void decide(const Pending& p);
-  void take(const Pending& p, double md, double md_sd);
+  void decide_with_depth(const Pending& p);
+  void take(const std::vector<Estimate>& windows, const std::string& tool_id, double md, double md_sd);
+  void close_stop();
   void prune();
-  bool moved_since(double until) const;  // the depth left the last station's between it and `until`
+  bool moved_since(double since, double md, double until) const;
+  double slope_span_s() const;
+  bool creeping(double t_end) const;  // the depth's fitted rate before t_end says it moves  // the depth left `md` in (since, until]
 
   DetectorOptions options_;
   Sink sink_;
   std::function<void(const std::string&)> note_;
   std::deque<DepthReport> depth_;   // in time order
+  DepthNoiseFloor noise_;
+  double reported_sd_ = 0;          // the largest sigma the depth reports carried
+  std::optional<OpenStop> stop_;
   std::deque<Pending> pending_;     // in window-end order
   DetectorCounters counters_;
   std::optional<double> last_md_;

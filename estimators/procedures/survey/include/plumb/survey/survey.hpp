@@ -6,11 +6,13 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "plumb/survey/azimuth_reference.hpp"
+#include "plumb/survey/iscwsa.hpp"
 #include "plumb/survey/minimum_curvature.hpp"
 #include "plumb/survey/quality.hpp"
 #include "plumb/survey/uncertainty.hpp"
@@ -29,6 +31,9 @@ struct Station {
   double total_g_mps2 = std::numeric_limits<double>::quiet_NaN();
   double total_b_uT = std::numeric_limits<double>::quiet_NaN();
   double dip_deg = std::numeric_limits<double>::quiet_NaN();
+  double toolface_deg = std::numeric_limits<double>::quiet_NaN();     // gravity toolface (NaN: not measured)
+  double toolface_sd_deg = std::numeric_limits<double>::quiet_NaN();
+  std::uint32_t windows = 1;           // attitude windows combined into the station (0: a listed station)
 };
 
 struct SurveyRow {
@@ -38,8 +43,15 @@ struct SurveyRow {
   AzimuthReference reference = AzimuthReference::Magnetic;
   QcResult qc;
   PathPoint point;
-  PositionUncertainty uncertainty;
+  PositionUncertainty uncertainty;     // every term: the error model's and the measured noise
+  PositionUncertainty random_uncertainty;  // the random terms only
+  // What the station's own angles are worth: the measured noise and every term of the error model
+  // at this station (random and systematic), or the measured noise alone without a model.
+  double inclination_total_sd_deg = 0, azimuth_total_sd_deg = 0;
+  double inclination_random_sd_deg = 0, azimuth_random_sd_deg = 0;  // the noise and the random terms
   std::string warning;                 // e.g. azimuth ill-conditioned; empty when none
+  ReferenceField field;                // the reference field of the QC and the error model
+  std::string error_model;             // the tool code, or "plumb" (plumb's own propagation)
 };
 
 struct SurveyOptions {
@@ -48,7 +60,10 @@ struct SurveyOptions {
   ReferenceField field;
   QcTolerances tolerances;
   QcChecks checks;
-  ErrorModel errors;                   // declination_sd_deg is taken from `north` for true/grid surveys
+  ErrorModel errors;                   // plumb's own terms; declination_sd_deg is taken from `north`
+  // The ISCWSA model (a tool code); without one, plumb's own propagation of `errors`. Its
+  // declination terms (AZ, DBH) are left out of a magnetic survey, whose north is magnetic north.
+  std::optional<iscwsa::ToolCode> tool_code;
   double section_azimuth_deg = 0;      // in the survey's reference
   Eigen::Vector3d tie_in = Eigen::Vector3d::Zero();  // position of the first station (north, east, tvd)
 };
@@ -80,6 +95,7 @@ class Survey {
   std::vector<SurveyRow> rows_;
   std::vector<StationGeometry> geometry_;
   std::vector<StationSigma> sigma_;
+  void add_model_uncertainty(SurveyRow& row);
   std::size_t failed_qc_ = 0;
 };
 

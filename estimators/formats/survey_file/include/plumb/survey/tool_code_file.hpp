@@ -1,0 +1,17 @@
+// A tool code file: the terms of an ISCWSA error model of one's own (a MEMS package is not an MWD
+// tool), in the layout of docs/conventions.md "Tool code file".
+#pragma once
+
+#include <istream>
+#include <string>
+
+#include "plumb/survey/iscwsa.hpp"
+
+namespace plumb::survey::iscwsa {
+
+// '#' comments (a line "# tortuosity_rad_per_m V" and "# revision N" are read), the header
+// `code,weight_function,magnitude,unit,propagation` and one row per term; propagation R, S, G or
+// W. Throws std::runtime_error naming the source and line.
+ToolCode read_tool_code(std::istream& in, const std::string& source);
+
+}  // namespace plumb::survey::iscwsa

@@ -1,0 +1,70 @@
+// The tool code file (docs/conventions.md "Tool code file"): an ISCWSA error model's terms.
+#include "plumb/survey/tool_code_file.hpp"
+
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "plumb/core/number.hpp"
+#include "plumb/csv/files.hpp"
+
+namespace plumb::survey::iscwsa {
+
+ToolCode read_tool_code(std::istream& in, const std::string& source) {
+  ToolCode t{source, 5, 0.000572615, {}};
+  std::map<std::string, std::size_t> columns;
+  std::string line;
+  std::size_t line_no = 0;
+  const char* required[] = {"code", "weight_function", "magnitude", "unit", "propagation"};
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const std::string where = source + ":" + std::to_string(line_no) + ": ";
+    if (line.empty()) continue;
+    if (line[0] == '#') {
+      std::istringstream words(line.substr(1));
+      std::string key, value;
+      words >> key >> value;
+      if (key == "tortuosity_rad_per_m" || key == "revision") {
+        const auto v = parse_number(value);
+        if (!v || !(*v > 0)) throw std::runtime_error(where + key + ": bad number '" + value + "'");
+        if (key == "revision") t.revision = static_cast<int>(*v);
+        else t.tortuosity_rad_per_m = *v;
+      }
+      continue;
+    }
+    const auto fields = csv::split_line(line);
+    if (columns.empty()) {
+      for (std::size_t i = 0; i < fields.size(); ++i) columns[fields[i]] = i;
+      for (const char* r : required)
+        if (!columns.count(r)) throw std::runtime_error(where + "no column '" + r + "' in the header");
+      continue;
+    }
+    const auto get = [&](const char* name) {
+      const std::size_t i = columns.at(name);
+      return i < fields.size() ? fields[i] : std::string();
+    };
+    Term term;
+    term.code = get("code");
+    term.weight_function = get("weight_function");
+    term.unit = get("unit");
+    const auto m = parse_number(get("magnitude"));
+    if (!m || !std::isfinite(*m) || *m < 0) throw std::runtime_error(where + "magnitude: bad number '" + get("magnitude") + "'");
+    term.magnitude = *m;
+    const std::string p = get("propagation");
+    if (p == "R") term.propagation = Propagation::Random;
+    else if (p == "S") term.propagation = Propagation::Systematic;
+    else if (p == "G") term.propagation = Propagation::Global;
+    else if (p == "W") term.propagation = Propagation::WellByWell;
+    else throw std::runtime_error(where + "propagation '" + p + "': R, S, G or W");
+    if (!known_weight_function(term.weight_function))
+      throw std::runtime_error(where + "unknown weighting function '" + term.weight_function + "'");
+    if (term.weight_function == "XCL") term.weight_function = term.code == "XCLH" ? "XCLH" : "XCLA";
+    t.terms.push_back(term);
+  }
+  if (t.terms.empty()) throw std::runtime_error(source + ": no terms");
+  return t;
+}
+
+}  // namespace plumb::survey::iscwsa

@@ -1,0 +1,220 @@
+#include "plumb/survey/iscwsa.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "iscwsa_weights.hpp"
+
+namespace plumb::survey::iscwsa {
+namespace {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+using detail::Vertical;
+using detail::WeightContext;
+constexpr double kRad = 3.14159265358979323846 / 180.0;
+
+// A magnitude in the units its weighting function expects: angles in radians.
+double si_magnitude(const Term& t) {
+  if (t.unit == "deg" || t.unit == "deg.nT") return t.magnitude * kRad;
+  return t.magnitude;
+}
+
+// d(position)/d(MD, I, A) of the course ending at each station (k) and of the course leaving it
+// (k + 1), SPE 67616 Appendix A; columns MD, I, A.
+struct Derivatives {
+  std::vector<Matrix3d> ending, leaving;
+};
+
+Vector3d direction(double inc, double azi) {
+  return {std::sin(inc) * std::cos(azi), std::sin(inc) * std::sin(azi), std::cos(inc)};
+}
+Vector3d d_direction_d_inc(double inc, double azi) {
+  return {std::cos(inc) * std::cos(azi), std::cos(inc) * std::sin(azi), -std::sin(inc)};
+}
+Vector3d d_direction_d_azi(double inc, double azi) { return {-std::sin(inc) * std::sin(azi), std::sin(inc) * std::cos(azi), 0}; }
+
+struct Rad {
+  double md, inc, azi, azm, tvd;
+};
+
+Derivatives derivatives(const std::vector<Rad>& s, int revision) {
+  const std::size_t n = s.size();
+  Derivatives d{std::vector<Matrix3d>(n, Matrix3d::Zero()), std::vector<Matrix3d>(n, Matrix3d::Zero())};
+  for (std::size_t k = 1; k < n; ++k) {
+    const double half = (s[k].md - s[k - 1].md) / 2;
+    const Vector3d along = 0.5 * (direction(s[k - 1].inc, s[k - 1].azi) + direction(s[k].inc, s[k].azi));
+    d.ending[k].col(0) = along;
+    d.ending[k].col(1) = half * d_direction_d_inc(s[k].inc, s[k].azi);
+    // Revision 5 counts the whole first course against the first station's inclination.
+    if (revision >= 5 && k == 1) d.ending[k](0, 1) *= 2;
+    d.ending[k].col(2) = half * d_direction_d_azi(s[k].inc, s[k].azi);
+    d.leaving[k - 1].col(0) = -along;
+    d.leaving[k - 1].col(1) = half * d_direction_d_inc(s[k - 1].inc, s[k - 1].azi);
+    d.leaving[k - 1].col(2) = half * d_direction_d_azi(s[k - 1].inc, s[k - 1].azi);
+  }
+  return d;
+}
+
+// One term's position changes: through both courses of each station (full) and through the course
+// ending at it only (the station's own, "star").
+struct TermEffect {
+  std::vector<Vector3d> full, star;
+  std::vector<Vector3d> dia;  // the (MD, I, A) change itself
+};
+
+double course_coefficient(const std::vector<Rad>& s, std::size_t k) {
+  const std::size_t c = std::max<std::size_t>(k, 1);
+  const double course = s[c].md - s[c - 1].md;
+  return std::max(1.0, std::sqrt(10.0 / course));
+}
+
+// Near vertical the azimuth-dependent terms take the model's vertical form: the error moves the
+// station sideways by the course length around it.
+void vertical_form(const std::vector<Rad>& s, std::size_t k, const detail::WeightFunction& wf, double mag,
+                   const Field& field, int revision, TermEffect& e) {
+  const std::size_t n = s.size();
+  const bool last = k + 1 == n;
+  const double around = last ? 0.0 : (s[k + 1].md - s[k - 1].md) / 2;
+  const double own = (s[k].md - s[k - 1].md) / 2;
+  if (wf.vertical == Vertical::AccelerometerXY) {
+    const double g = mag / field.gravity_mps2;
+    const Vector3d side(-std::sin(s[k].azi), std::cos(s[k].azi), 0);
+    e.full[k] = last ? Vector3d::Zero() : Vector3d(around * g * side);
+    e.star[k] = last ? Vector3d::Zero() : Vector3d(own * g * side);
+    if (revision >= 5 && k == 1 && n > 2) {
+      e.full[k](1) = (s[2].md + s[1].md - 2 * s[0].md) / 2 * g * std::cos(s[1].azi);
+      e.star[k](1) = (s[1].md - s[0].md) * g * std::cos(s[1].azi);
+    }
+    return;
+  }
+  const int axis = wf.vertical == Vertical::MisalignmentNorth ? 0 : 1;
+  e.full[k].setZero();
+  e.star[k].setZero();
+  if (wf.course_coefficient) {
+    const double c = course_coefficient(s, k);
+    double full = last ? c * (s[k].md - s[k - 1].md) / 2 : c * around;
+    if (k == 1 && n > 2) full = c * (s[2].md + s[1].md - 2 * s[0].md) / 2;
+    e.full[k](axis) = full * mag;
+    e.star[k](axis) = (k == 1 ? 2 * own : own) * mag;
+  } else {
+    e.full[k](axis) = around * mag;
+    e.star[k](axis) = last ? 0.0 : own * mag;
+  }
+}
+
+TermEffect sensor_term(const std::vector<Rad>& s, const Derivatives& d, const Term& t, const Field& field, int revision) {
+  const detail::WeightFunction wf = detail::weight_function(t.weight_function);
+  const std::size_t n = s.size();
+  const double mag = si_magnitude(t);
+  const double limit = field.vertical_inc_limit_deg * kRad;
+  TermEffect e{std::vector<Vector3d>(n, Vector3d::Zero()), std::vector<Vector3d>(n, Vector3d::Zero()),
+               std::vector<Vector3d>(n, Vector3d::Zero())};
+  for (std::size_t k = 0; k < n; ++k) {
+    const bool vertical = s[k].inc < limit && wf.vertical != Vertical::Regular;
+    if (!vertical) {
+      WeightContext c{s[k].md, s[k].tvd, s[k].inc, s[k].azi, s[k].azm, field.gravity_mps2, field.total_b_nT,
+                      field.dip_deg * kRad, k ? s[k].md - s[k - 1].md : 0.0};
+      Vector3d w = wf.weight(c) * mag;
+      if (wf.course_coefficient) w *= course_coefficient(s, k);
+      for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(w(i))) w(i) = 0;
+      e.dia[k] = w;
+    }
+    if (k == 0) continue;  // the tie-in: no error of its own
+    if (vertical) {
+      vertical_form(s, k, wf, mag, field, revision, e);
+    } else {
+      e.full[k] = (d.ending[k] + d.leaving[k]) * e.dia[k];
+      e.star[k] = d.ending[k] * e.dia[k];
+    }
+  }
+  return e;
+}
+
+// XCLA (lateral) and XCLH (high side), revision 5: a course longer than the survey interval hides a
+// curvature the minimum-curvature arc does not have; at least the tortuosity's.
+TermEffect course_length_term(const std::vector<Rad>& s, const Term& t, const ToolCode& tool, const Field& field) {
+  const std::size_t n = s.size();
+  const bool lateral = t.code != "XCLH" && t.weight_function != "XCLH";
+  const double limit = field.vertical_inc_limit_deg * kRad;
+  TermEffect e{std::vector<Vector3d>(n, Vector3d::Zero()), std::vector<Vector3d>(n, Vector3d::Zero()),
+               std::vector<Vector3d>(n, Vector3d::Zero())};
+  for (std::size_t k = 1; k < n; ++k) {
+    const double course = s[k].md - s[k - 1].md;
+    const double floor = tool.tortuosity_rad_per_m * course;
+    Vector3d v;
+    if (lateral) {
+      const double turn = std::remainder(s[k].azi - s[k - 1].azi, 2 * 3.14159265358979323846);
+      const double seen = s[k - 1].inc < limit ? 0.0 : std::abs(std::sin(s[k].inc) * turn);
+      v = course * std::max(seen, floor) * Vector3d(-std::sin(s[k].azi), std::cos(s[k].azi), 0);
+    } else {
+      const double seen = std::abs(s[k].inc - s[k - 1].inc);
+      v = course * std::max(seen, floor) * d_direction_d_inc(s[k].inc, s[k].azi);
+    }
+    e.full[k] = e.star[k] = v * t.magnitude;
+  }
+  return e;
+}
+
+std::vector<Matrix3d> covariances(const TermEffect& e, Propagation p) {
+  const std::size_t n = e.full.size();
+  std::vector<Matrix3d> out(n, Matrix3d::Zero());
+  Vector3d sum = Vector3d::Zero();
+  Matrix3d sum_cov = Matrix3d::Zero();
+  for (std::size_t k = 0; k < n; ++k) {
+    if (p == Propagation::Random) {
+      out[k] = sum_cov + e.star[k] * e.star[k].transpose();
+      sum_cov += e.full[k] * e.full[k].transpose();
+    } else {
+      const Vector3d v = sum + e.star[k];
+      out[k] = v * v.transpose();
+      sum += e.full[k];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+bool known_weight_function(const std::string& name) {
+  return detail::weight_function(name).weight != nullptr || detail::is_course_length_term(name, "");
+}
+
+Result propagate(const std::vector<Station>& stations, const ToolCode& tool, const Field& field) {
+  std::vector<Rad> s;
+  for (const auto& st : stations) {
+    if (!s.empty() && !(st.md_m > s.back().md))
+      throw std::invalid_argument("ISCWSA model: measured depths must increase strictly");
+    s.push_back({st.md_m, st.inclination_deg * kRad, st.azimuth_deg * kRad, st.magnetic_azimuth_deg * kRad, st.tvd_m});
+  }
+  const std::size_t n = s.size();
+  Result r;
+  r.random.assign(n, Matrix3d::Zero());
+  r.total.assign(n, Matrix3d::Zero());
+  r.angle_variance.assign(n, Eigen::Vector2d::Zero());
+  r.random_angle_variance.assign(n, Eigen::Vector2d::Zero());
+  if (n == 0) return r;
+  const Derivatives d = derivatives(s, tool.revision);
+  for (const Term& t : tool.terms) {
+    const bool xcl = detail::is_course_length_term(t.weight_function, t.code);
+    if (!xcl && !detail::weight_function(t.weight_function).weight)
+      throw std::invalid_argument("ISCWSA model: term " + t.code + " has an unknown weighting function '" +
+                                  t.weight_function + "'");
+    const TermEffect e = xcl ? course_length_term(s, t, tool, field) : sensor_term(s, d, t, field, tool.revision);
+    r.codes.push_back(t.code);
+    r.per_term.push_back(covariances(e, t.propagation));
+    const bool random = t.propagation == Propagation::Random;
+    for (std::size_t k = 0; k < n; ++k) {
+      r.total[k] += r.per_term.back()[k];
+      if (random) r.random[k] += r.per_term.back()[k];
+      const Eigen::Vector2d angles(e.dia[k](1) * e.dia[k](1), e.dia[k](2) * e.dia[k](2));
+      r.angle_variance[k] += angles;
+      if (random) r.random_angle_variance[k] += angles;
+    }
+  }
+  return r;
+}
+
+}  // namespace plumb::survey::iscwsa

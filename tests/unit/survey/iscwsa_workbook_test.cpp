@@ -1,0 +1,165 @@
+// The ISCWSA MWD error model against ISCWSA's own example workbooks (tests/data/iscwsa, extracted
+// from error-model-example-mwdrev4-iscwsa-1, -mwdrev5-iscwsa-1 and -mwdrev5-iscwsa-2): the wells'
+// stations, field and term values in; every term's covariance (NN, EE, VV, NE, NV, EV) at each
+// diagnostic depth must match the workbook's within 0.1 %.
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "plumb/csv/files.hpp"
+#include "plumb/survey/iscwsa.hpp"
+#include "plumb/survey/minimum_curvature.hpp"
+#include "plumb/survey/tool_code_file.hpp"
+
+namespace plumb::survey::iscwsa {
+namespace {
+
+const std::string kData = PLUMB_ISCWSA_DATA;
+
+std::vector<std::vector<std::string>> rows(const std::string& path) {
+  std::ifstream in(path);
+  EXPECT_TRUE(in) << path;
+  std::vector<std::vector<std::string>> out;
+  std::string line;
+  bool header = true;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (header) {
+      header = false;
+      continue;
+    }
+    out.push_back(csv::split_line(line));
+  }
+  return out;
+}
+
+struct Example {
+  std::vector<Station> stations;
+  Field field;
+  ToolCode tool;
+  double depth_unit_m = 1;
+};
+
+Example load(const std::string& name) {
+  Example ex;
+  std::ifstream f(kData + "/" + name + ".field.txt");
+  std::map<std::string, std::string> kv;
+  for (std::string key, value; f >> key;) {
+    if (key[0] == '#') {
+      std::getline(f, value);
+      continue;
+    }
+    f >> value;
+    kv[key] = value;
+  }
+  ex.field.gravity_mps2 = std::stod(kv.at("gravity_mps2"));
+  ex.field.total_b_nT = std::stod(kv.at("total_b_nT"));
+  ex.field.dip_deg = std::stod(kv.at("dip_deg"));
+  ex.field.vertical_inc_limit_deg = std::stod(kv.at("vertical_inc_limit_deg"));
+  const double declination = std::stod(kv.at("declination_deg"));
+  ex.depth_unit_m = kv.at("depth_unit") == "ft" ? kFootM : 1.0;
+  std::vector<StationGeometry> geometry;
+  for (const auto& r : rows(kData + "/" + name + ".wellpath.csv"))
+    geometry.push_back({std::stod(r[0]) * ex.depth_unit_m, std::stod(r[1]), std::stod(r[2])});
+  const auto path = minimum_curvature(geometry);
+  for (std::size_t k = 0; k < geometry.size(); ++k)
+    ex.stations.push_back({geometry[k].md_m, geometry[k].inclination_deg, geometry[k].azimuth_deg,
+                           geometry[k].azimuth_deg - declination, path[k].tvd_m});
+  std::ifstream tool(kData + "/" + name + ".tool.csv");
+  ex.tool = read_tool_code(tool, name + ".tool.csv");
+  if (name.find("rev4") != std::string::npos) ex.tool.revision = 4;
+  return ex;
+}
+
+// Every term at every diagnostic depth; returns the number of values compared.
+int compare(const std::string& name) {
+  const Example ex = load(name);
+  const Result r = propagate(ex.stations, ex.tool, ex.field);
+  std::map<std::string, std::size_t> term;
+  for (std::size_t i = 0; i < r.codes.size(); ++i) term[r.codes[i]] = i;
+  int compared = 0;
+  for (const auto& row : rows(kData + "/" + name + ".expected.csv")) {
+    const double md = std::stod(row[0]) * ex.depth_unit_m;
+    const std::string& code = row[1];
+    std::size_t k = 0;
+    while (k < ex.stations.size() && std::abs(ex.stations[k].md_m - md) > 1e-6) ++k;
+    if (k == ex.stations.size()) {
+      ADD_FAILURE() << name << ": no station at MD " << row[0];
+      continue;
+    }
+    Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
+    if (code == "TOTAL") {
+      c = r.total[k];
+    } else if (term.count(code)) {
+      c = r.per_term[term[code]][k];
+    } else {
+      ADD_FAILURE() << name << ": term " << code << " missing from the model";
+      continue;
+    }
+    const double ours[6] = {c(0, 0), c(1, 1), c(2, 2), c(0, 1), c(0, 2), c(1, 2)};
+    const char* names[6] = {"NN", "EE", "VV", "NE", "NV", "EV"};
+    for (int i = 0; i < 6; ++i) {
+      const double theirs = std::stod(row[2 + static_cast<std::size_t>(i)]);
+      // 0.1 % of the value; a value the workbook gives as 0 must be 0 to round-off.
+      EXPECT_NEAR(ours[i], theirs, 1e-3 * std::abs(theirs) + 1e-10)
+          << name << " MD " << row[0] << " " << code << " " << names[i];
+      ++compared;
+    }
+  }
+  return compared;
+}
+
+TEST(IscwsaWorkbook, MwdRevision4Example1) { EXPECT_EQ(compare("mwdrev4-iscwsa-1"), 4 * 28 * 6); }
+TEST(IscwsaWorkbook, MwdRevision5Example1) { EXPECT_EQ(compare("mwdrev5-iscwsa-1"), 4 * 36 * 6); }
+TEST(IscwsaWorkbook, MwdRevision5Example2) { EXPECT_EQ(compare("mwdrev5-iscwsa-2"), 7 * 36 * 6); }
+
+}  // namespace
+}  // namespace plumb::survey::iscwsa
+
+namespace plumb::survey::iscwsa {
+namespace {
+
+TEST(IscwsaToolCode, FileErrorsNameTheLine) {
+  std::istringstream bad("code,weight_function,magnitude,unit,propagation\nABZ,ABZ,0.004,m/s2,S\nXX,NOPE,1,m,R\n");
+  try {
+    read_tool_code(bad, "mine.csv");
+    FAIL() << "an unknown weighting function was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("mine.csv:3: unknown weighting function 'NOPE'"), std::string::npos) << e.what();
+  }
+  std::istringstream propagation("code,weight_function,magnitude,unit,propagation\nABZ,ABZ,0.004,m/s2,Q\n");
+  EXPECT_THROW(read_tool_code(propagation, "p.csv"), std::runtime_error);
+  EXPECT_THROW(builtin_tool_code("MWD+XYZ"), std::invalid_argument);
+}
+
+TEST(IscwsaToolCode, RevisionsDifferWhereTheDocumentsDo) {
+  const auto find = [](const ToolCode& t, const std::string& code) {
+    for (const auto& term : t.terms)
+      if (term.code == code) return term.magnitude;
+    return -1.0;
+  };
+  EXPECT_EQ(find(builtin_tool_code("MWD"), "DEC-OH"), 0.21);
+  EXPECT_EQ(find(builtin_tool_code("MWD:rev5"), "DEC-OH"), 0.20);
+  EXPECT_EQ(find(builtin_tool_code("MWD:rev4"), "DECG"), 0.36);
+  EXPECT_EQ(find(builtin_tool_code("MWD+IFR1"), "DEC-U"), 0.11);
+  // The built-in revision 5 is the workbooks' model: the same terms and values.
+  std::ifstream in(kData + "/mwdrev5-iscwsa-1.tool.csv");
+  const ToolCode workbook = read_tool_code(in, "workbook");
+  const ToolCode builtin = builtin_tool_code("MWD:rev5");
+  ASSERT_EQ(workbook.terms.size(), builtin.terms.size());
+  for (const Term& w : workbook.terms) {
+    EXPECT_EQ(find(builtin, w.code), w.magnitude) << w.code;
+    for (const Term& b : builtin.terms) {
+      if (b.code == w.code) {
+        EXPECT_EQ(w.propagation == Propagation::Random, b.propagation == Propagation::Random) << w.code;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace plumb::survey::iscwsa
