@@ -63,14 +63,9 @@ double channel_tolerance(const std::vector<Block>& blocks, int c, double k_sigma
   return tol > 0 ? tol : 1e-12;  // a noise-free channel must repeat exactly
 }
 
-}  // namespace
-
-StationAverage average_station(const std::vector<Sample>& samples, const Station& station,
-                               const SettleOptions& options) {
-  const std::string who = "station '" + station.name + "'";
-  if (!(station.end_s > station.start_s)) throw CalibrationError(who + ": end time is not after start time");
-  StationAverage out;
-  out.station = station;
+// The samples of the station's window that can be used; the rest are counted as rejected.
+std::vector<const Sample*> usable_samples(const std::vector<Sample>& samples, const Station& station,
+                                          StationAverage& out) {
   std::vector<const Sample*> usable;
   for (const auto& s : samples) {
     if (s.t < station.start_s || s.t > station.end_s) continue;
@@ -83,15 +78,19 @@ StationAverage average_station(const std::vector<Sample>& samples, const Station
   out.has_temperature = !usable.empty() && std::all_of(usable.begin(), usable.end(), [](const Sample* s) {
     return (s->flags & flags::kHasTemperature) != 0;
   });
+  return usable;
+}
 
-  // Readings: block means.
+// Readings: block means of block_s each. The last block is usually short: dropped from the
+// settling test unless it is all there is.
+std::vector<Block> readings(const std::vector<const Sample*>& usable, double block_s) {
   std::vector<Block> blocks;
   std::size_t i = 0;
   while (i < usable.size()) {
     Block b;
     b.first = i;
     const double t0 = usable[i]->t;
-    while (i < usable.size() && usable[i]->t < t0 + options.block_s) ++i;
+    while (i < usable.size() && usable[i]->t < t0 + block_s) ++i;
     b.last = i;
     const double n = static_cast<double>(b.last - b.first);
     for (std::size_t k = b.first; k < b.last; ++k) b.mean += channels_of(*usable[k]);
@@ -100,56 +99,68 @@ StationAverage average_station(const std::vector<Sample>& samples, const Station
     b.sd = (b.sd / std::max(1.0, n - 1)).cwiseSqrt();
     blocks.push_back(b);
   }
-  // The last block is usually short: drop it from the settling test unless it is all there is.
   if (blocks.size() > 1 && blocks.back().last - blocks.back().first < (blocks.front().last - blocks.front().first) / 2)
     blocks.pop_back();
-  const auto repeats = static_cast<std::size_t>(std::max(2, options.repeats));
-  if (blocks.size() < repeats)
-    throw CalibrationError(who + ": only " + std::to_string(usable.size()) + " usable samples in [" +
-                           fmt(station.start_s) + ", " + fmt(station.end_s) + "] s, too few to see it settle (" +
-                           std::to_string(repeats) + " readings of " + fmt(options.block_s) + " s needed)");
+  return blocks;
+}
 
+// What counts as motion on each channel the stillness is judged on.
+struct Motion {
+  std::vector<int> channels;
+  Channels quantum = Channels::Zero();       // a counted output's step
+  Channels tol = Channels::Constant(1e-12);  // settling tolerance of a reading
+  Channels sample_sd = Channels::Zero();     // typical scatter of one sample
+};
+
+Motion motion_tolerances(const std::vector<const Sample*>& usable, const std::vector<Block>& blocks,
+                         const SettleOptions& options) {
+  Motion m;
   // The tool is still when every sensor says so: accelerometers and magnetometers always (a
   // magnetometer still turning after a turntable move is a move), gyros when the package has them.
   // Settling and motion are judged on the same channels.
   const bool has_gyro = !usable.empty() && std::all_of(usable.begin(), usable.end(), [](const Sample* s) {
     return (s->flags & flags::kHasGyro) != 0;
   });
-  std::vector<int> motion_channels{0, 1, 2, 3, 4, 5};
-  if (has_gyro) motion_channels.insert(motion_channels.end(), {7, 8, 9});
+  m.channels = {0, 1, 2, 3, 4, 5};
+  if (has_gyro) m.channels.insert(m.channels.end(), {7, 8, 9});
   // Counted outputs step by one count: a channel that sits on one count for most of a station has
   // almost no noise, yet one count more in one sample is no motion. The count (the smallest step
   // between samples) sets a floor: two counts in a reading, half a count for a sample's scatter.
-  Channels quantum = Channels::Zero();
-  for (int c : motion_channels) {
+  for (int c : m.channels) {
     double q = 0;
     for (std::size_t k = 1; k < usable.size(); ++k) {
       const double d = std::abs(channels_of(*usable[k])[c] - channels_of(*usable[k - 1])[c]);
       if (d > 1e-9 * std::abs(channels_of(*usable[k])[c]) && (q == 0 || d < q)) q = d;
     }
-    quantum[c] = q;
+    m.quantum[c] = q;
   }
   const double n_block = static_cast<double>(blocks.front().last - blocks.front().first);
-  Channels tol = Channels::Constant(1e-12);
-  for (int c : motion_channels)
-    tol[c] = channel_tolerance(blocks, c, options.k_sigma,
-                               std::max(2 * quantum[c] / n_block,
-                                        c < 3 ? options.min_tolerance_accel : c < 6 ? options.min_tolerance_mag : 0));
+  for (int c : m.channels)
+    m.tol[c] = channel_tolerance(blocks, c, options.k_sigma,
+                                 std::max(2 * m.quantum[c] / n_block,
+                                          c < 3 ? options.min_tolerance_accel : c < 6 ? options.min_tolerance_mag : 0));
 
   // Motion shows as a step between readings or as excess scatter within one. The steps are judged
   // against twice the settling tolerance (8 sigma of a reading: no false alarm over hundreds of
   // stations), the scatter against 4 times the typical scatter of a sample.
-  Channels sample_sd = Channels::Zero();
-  for (int c : motion_channels) {
+  for (int c : m.channels) {
     std::vector<double> sds;
     for (const auto& b : blocks) sds.push_back(b.sd[c]);
     // Counted outputs can show no scatter inside most readings: the reading-to-reading noise,
     // scaled to one sample, is the floor.
-    sample_sd[c] = std::max({median(sds), tol[c] / options.k_sigma * std::sqrt(n_block), 0.5 * quantum[c]});
+    m.sample_sd[c] = std::max({median(sds), m.tol[c] / options.k_sigma * std::sqrt(n_block), 0.5 * m.quantum[c]});
   }
+  return m;
+}
+
+// Still segments: settle (the repeating readings), then stay until a reading is disturbed; the
+// disturbances (time, channel) between them are appended.
+std::vector<Segment> still_segments(const std::vector<const Sample*>& usable, const std::vector<Block>& blocks,
+                                    const Motion& m, std::size_t repeats,
+                                    std::vector<std::pair<double, int>>& disturbances) {
   const auto disturbed = [&](std::size_t k, const Channels& reference, int& channel) {
-    for (int c : motion_channels) {
-      if (std::abs(blocks[k].mean[c] - reference[c]) > 2 * tol[c] || blocks[k].sd[c] > 4 * sample_sd[c]) {
+    for (int c : m.channels) {
+      if (std::abs(blocks[k].mean[c] - reference[c]) > 2 * m.tol[c] || blocks[k].sd[c] > 4 * m.sample_sd[c]) {
         channel = c;
         return true;
       }
@@ -157,20 +168,18 @@ StationAverage average_station(const std::vector<Sample>& samples, const Station
     return false;
   };
   const auto settles_at = [&](std::size_t k) {
-    for (int c : motion_channels) {
+    for (int c : m.channels) {
       double lo = blocks[k].mean[c], hi = lo;
       for (std::size_t j = k + 1 - repeats; j <= k; ++j) {
         lo = std::min(lo, blocks[j].mean[c]);
         hi = std::max(hi, blocks[j].mean[c]);
       }
-      if (hi - lo > tol[c]) return false;
+      if (hi - lo > m.tol[c]) return false;
     }
     return true;
   };
 
-  // Still segments: settle (the rule above), then stay until a reading is disturbed.
   std::vector<Segment> segments;
-  std::vector<std::pair<double, int>> disturbances;   // time, channel
   std::size_t from = 0;
   while (from + repeats <= blocks.size()) {
     std::size_t k = from + repeats - 1;
@@ -193,37 +202,41 @@ StationAverage average_station(const std::vector<Sample>& samples, const Station
     if (j < blocks.size()) disturbances.emplace_back(usable[blocks[j].first]->t, channel);
     from = j + 1;
   }
+  return segments;
+}
 
-  const auto at = [&](std::size_t block) { return fmt(usable[blocks[block].first]->t); };
-  if (segments.empty()) {
-    // Never settled: name the channel that changed most, relative to its tolerance, over the last
-    // readings.
-    Channels lo = blocks.back().mean, hi = lo;
-    for (std::size_t j = blocks.size() - repeats; j < blocks.size(); ++j) {
-      lo = lo.cwiseMin(blocks[j].mean);
-      hi = hi.cwiseMax(blocks[j].mean);
-    }
-    const Channels change = hi - lo;
-    int worst = 0;
-    for (int c : motion_channels)
-      if (change[c] / tol[c] > change[worst] / tol[worst]) worst = c;
-    std::string moved;
-    if (!disturbances.empty()) moved = " (moving since t = " + fmt(disturbances.front().first) + " s)";
-    throw CalibrationError(who + ": never settled: the last " + std::to_string(repeats) + " readings of " +
-                           kNames[worst] + " still differ by " + fmt(change[worst]) + " (tolerance " +
-                           fmt(tol[worst]) + ")" + moved);
+// Never settled: names the channel that changed most, relative to its tolerance, over the last readings.
+[[noreturn]] void never_settled(const std::string& who, const std::vector<Block>& blocks, const Motion& m,
+                                std::size_t repeats, const std::vector<std::pair<double, int>>& disturbances) {
+  Channels lo = blocks.back().mean, hi = lo;
+  for (std::size_t j = blocks.size() - repeats; j < blocks.size(); ++j) {
+    lo = lo.cwiseMin(blocks[j].mean);
+    hi = hi.cwiseMax(blocks[j].mean);
   }
+  const Channels change = hi - lo;
+  int worst = 0;
+  for (int c : m.channels)
+    if (change[c] / m.tol[c] > change[worst] / m.tol[worst]) worst = c;
+  std::string moved;
+  if (!disturbances.empty()) moved = " (moving since t = " + fmt(disturbances.front().first) + " s)";
+  throw CalibrationError(who + ": never settled: the last " + std::to_string(repeats) + " readings of " +
+                         kNames[worst] + " still differ by " + fmt(change[worst]) + " (tolerance " +
+                         fmt(m.tol[worst]) + ")" + moved);
+}
 
-  // The longest still part is the station. Another still part at a different place is refused
-  // unless the tool came back (a still part at the station's place before and after it): then it
-  // was an excursion (lifted and put back). Otherwise which place was meant cannot be told.
+// The longest still part is the station. Another still part at a different place is refused
+// unless the tool came back (a still part at the station's place before and after it): then it was
+// an excursion (lifted and put back). Otherwise which place was meant cannot be told.
+const Segment& the_station(const std::string& who, const Station& station, const std::vector<const Sample*>& usable,
+                           const std::vector<Block>& blocks, const Motion& m, const std::vector<Segment>& segments) {
+  const auto at = [&](std::size_t block) { return fmt(usable[blocks[block].first]->t); };
   std::size_t longest = 0;
   for (std::size_t k = 1; k < segments.size(); ++k)
     if (segments[k].end - segments[k].first > segments[longest].end - segments[longest].first) longest = k;
   const Segment& use = segments[longest];
   const auto same_place = [&](const Segment& a, int& channel) {
-    for (int c : motion_channels)
-      if (std::abs(a.mean[c] - use.mean[c]) > 2 * tol[c]) {
+    for (int c : m.channels)
+      if (std::abs(a.mean[c] - use.mean[c]) > 2 * m.tol[c]) {
         channel = c;
         return false;
       }
@@ -245,17 +258,17 @@ StationAverage average_station(const std::vector<Sample>& samples, const Station
     const double when = usable[blocks[std::min(earlier.end, blocks.size() - 1)].first]->t;
     throw CalibrationError(who + ": the tool moved at t = " + fmt(when) + " s and was still at another place (" +
                            kNames[channel] + " differs by " + fmt(std::abs(segments[k].mean[channel] - use.mean[channel])) +
-                           ", tolerance " + fmt(2 * tol[channel]) + ") from t = " + at(segments[k].settle) +
+                           ", tolerance " + fmt(2 * m.tol[channel]) + ") from t = " + at(segments[k].settle) +
                            " to " + (segments[k].end < blocks.size() ? at(segments[k].end) : fmt(station.end_s)) +
                            " s: the window holds more than one position; cut it to one or repeat the station");
   }
-  if (!disturbances.empty()) {
-    std::string times;
-    for (const auto& [t, c] : disturbances) times += (times.empty() ? "" : ", ") + fmt(t) + " s (" + kNames[c] + ")";
-    out.notes.push_back(who + ": motion at t = " + times + "; used the still part from " + at(use.first) + " to " +
-                        (use.end < blocks.size() ? at(use.end) : fmt(station.end_s)) + " s");
-  }
+  return use;
+}
 
+// The station's averages and their standard errors, from the end of the repeating readings to
+// the end of the still part `use`.
+void station_means(const Station& station, const std::vector<const Sample*>& usable, const std::vector<Block>& blocks,
+                   const Segment& use, const Motion& m, StationAverage& out) {
   // Average from the end of the repeating readings to the end of the still part: the tail of the
   // settling transient left in the repeating readings would otherwise bias a short station's mean
   // by a fair fraction of its standard error.
@@ -285,7 +298,7 @@ StationAverage average_station(const std::vector<Sample>& samples, const Station
   // A counted channel can sit on one count for a whole station (noise well below a count per
   // sample): its scatter is then nil, yet its mean is known only to about a count over the average
   // (the counting's phase at both ends: sd = count / (sqrt(6) n)). That is the floor.
-  for (int c : motion_channels) se[c] = std::max(se[c], quantum[c] / (std::sqrt(6.0) * n));
+  for (int c : m.channels) se[c] = std::max(se[c], m.quantum[c] / (std::sqrt(6.0) * n));
   out.accel = mean.segment<3>(0);
   out.accel_se = se.segment<3>(0);
   out.mag = mean.segment<3>(3);
@@ -294,6 +307,36 @@ StationAverage average_station(const std::vector<Sample>& samples, const Station
   out.raw_temp_se = se[kTemp];
   out.samples_used = last - first;
   out.settled_after_s = usable[first]->t - station.start_s;
+}
+
+}  // namespace
+
+StationAverage average_station(const std::vector<Sample>& samples, const Station& station,
+                               const SettleOptions& options) {
+  const std::string who = "station '" + station.name + "'";
+  if (!(station.end_s > station.start_s)) throw CalibrationError(who + ": end time is not after start time");
+  StationAverage out;
+  out.station = station;
+  const std::vector<const Sample*> usable = usable_samples(samples, station, out);
+  const std::vector<Block> blocks = readings(usable, options.block_s);
+  const auto repeats = static_cast<std::size_t>(std::max(2, options.repeats));
+  if (blocks.size() < repeats)
+    throw CalibrationError(who + ": only " + std::to_string(usable.size()) + " usable samples in [" +
+                           fmt(station.start_s) + ", " + fmt(station.end_s) + "] s, too few to see it settle (" +
+                           std::to_string(repeats) + " readings of " + fmt(options.block_s) + " s needed)");
+  const Motion m = motion_tolerances(usable, blocks, options);
+  std::vector<std::pair<double, int>> disturbances;  // time, channel
+  const std::vector<Segment> segments = still_segments(usable, blocks, m, repeats, disturbances);
+  if (segments.empty()) never_settled(who, blocks, m, repeats, disturbances);
+  const Segment& use = the_station(who, station, usable, blocks, m, segments);
+  const auto at = [&](std::size_t block) { return fmt(usable[blocks[block].first]->t); };
+  if (!disturbances.empty()) {
+    std::string times;
+    for (const auto& [t, c] : disturbances) times += (times.empty() ? "" : ", ") + fmt(t) + " s (" + kNames[c] + ")";
+    out.notes.push_back(who + ": motion at t = " + times + "; used the still part from " + at(use.first) + " to " +
+                        (use.end < blocks.size() ? at(use.end) : fmt(station.end_s)) + " s");
+  }
+  station_means(station, usable, blocks, use, m, out);
   return out;
 }
 
