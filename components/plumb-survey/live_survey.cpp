@@ -39,63 +39,98 @@ std::string topic_safe(std::string s) {
 
 }  // namespace
 
-int run_live_survey(const LiveOptions& o) {
-  if (o.tool_id.empty()) throw std::invalid_argument("--tool-id is required: it names the tool surveyed and its topic");
-  if (o.file.empty()) throw std::invalid_argument("--file is required: the survey is kept there across restarts");
-  survey::Survey result(components::make_survey_options(o.survey, o.estimator));
-  const double depth_sd = o.survey.depth_sd_m;
-  const auto note = [](const std::string& n) { std::cerr << kProgram << ": " << n << std::endl; };
-  SurveyStore store(o.file, result, note);
+namespace {
 
-  auto conn = components::connect(o.transport, kProgram);
-  const std::string survey_topic = transport::topic_names::survey(topic_safe(o.tool_id));
-  const std::string attitude_topic = o.attitude_topic.empty() ? transport::topic_names::attitude(o.estimator) : o.attitude_topic;
-  auto writer = transport::make_writer<topics::SurveyStation>(*conn.participant, survey_topic,
-                                                               transport::default_qos_for_topic(survey_topic));
-  auto attitude = transport::make_reader<topics::Attitude>(*conn.participant, attitude_topic, transport::Qos::attitude());
-  auto depth = transport::make_reader<topics::MeasuredDepth>(
-      *conn.participant, transport::topic_names::kDepth, transport::default_qos_for_topic(transport::topic_names::kDepth));
-  components::StatusReporter status(*conn.participant, kProgram);
-  components::install_stop_handler();
+void note(const std::string& n) { std::cerr << kProgram << ": " << n << std::endl; }
 
-  // Stations the file already holds are published again: this writer is new, and late joiners get
-  // the whole survey from it.
-  for (const auto& row : result.rows()) {
-    writer.write(to_topic(row));
-    if (!o.quiet) print_row(row, "resumed station");
+// One live survey: its topics, the stations it has (kept in the file), what it has heard.
+class LiveSurvey {
+ public:
+  explicit LiveSurvey(const LiveOptions& o)
+      : o_(o),
+        result_(components::make_survey_options(o.survey, o.estimator)),
+        store_(o.file, result_, note),
+        conn_(components::connect(o.transport, kProgram)),
+        survey_topic_(transport::topic_names::survey(topic_safe(o.tool_id))),
+        attitude_topic_(o.attitude_topic.empty() ? transport::topic_names::attitude(o.estimator) : o.attitude_topic),
+        writer_(transport::make_writer<topics::SurveyStation>(*conn_.participant, survey_topic_,
+                                                               transport::default_qos_for_topic(survey_topic_))),
+        attitude_(transport::make_reader<topics::Attitude>(*conn_.participant, attitude_topic_, transport::Qos::attitude())),
+        depth_(transport::make_reader<topics::MeasuredDepth>(*conn_.participant, transport::topic_names::kDepth,
+                                                             transport::default_qos_for_topic(transport::topic_names::kDepth))),
+        status_(*conn_.participant, kProgram),
+        detector_(components::make_detector_options(o.survey), [this](survey::Station st) { on_station(st); }, note) {}
+
+  int run() {
+    components::install_stop_handler();
+    republish_resumed();
+    std::cerr << kProgram << ": " << conn_.transport->name() << ", tool '" << o_.tool_id << "': " << attitude_topic_
+              << " + " << transport::topic_names::kDepth << " -> " << survey_topic_ << ", file " << o_.file << std::endl;
+    t0_ = Clock::now();
+    last_attitude_ = Clock::now();
+    status_.publish("running", counters());
+    while (!components::g_stop && !enough()) {
+      say_what_it_waits_for();
+      if (o_.timeout_s > 0 && std::chrono::duration<double>(Clock::now() - t0_).count() > o_.timeout_s) {
+        status_.publish("failed", counters(), "timed out");
+        components::print_error(kProgram, "timed out with " + std::to_string(result_.rows().size()) + " of " +
+                                              std::to_string(o_.count) + " stations");
+        return 1;
+      }
+      attitude_.wait(std::chrono::milliseconds(100));
+      take_depths();  // first: a window is decided once the depth after its end is known
+      // The run ended (or the estimator stopped) during a stop: its station is due, not held forever.
+      if (detector_.stop_open() && Clock::now() - last_attitude_ > std::chrono::seconds(kSilenceFlushS)) detector_.flush();
+      take_attitudes();
+      if (status_.due()) status_.publish(refused_ ? "degraded" : "running", counters(), last_error_);
+    }
+    // The stop in progress when asked to stop has its station now: its windows are all there are.
+    if (!enough()) detector_.flush();
+    if (result_.rows().empty()) {
+      note(survey::no_station_advice(detector_.counters(), o_.estimator, detector_.still_tolerance_m()));
+    }
+    status_.publish("stopping", counters(), last_error_);
+    std::cerr << kProgram << ": " << result_.rows().size() << " station(s) (" << store_.resumed() << " resumed), "
+              << result_.failed_qc() << " failed QC, " << refused_ << " refused" << std::endl;
+    if (enough()) components::sleep_while_running(o_.linger_s);
+    return 0;
   }
 
-  std::uint64_t refused = 0, depth_messages = 0, other_tool = 0;
-  AttitudeContinuity continuity;
-  std::string last_error;
-  const auto on_station = [&](survey::Station s) {
-    if (depth_sd >= 0) s.md_sd_m = depth_sd;
+ private:
+  // Stations the file already holds are published again: this writer is new, and late joiners get
+  // the whole survey from it. The detector goes on after the last of them.
+  void republish_resumed() {
+    for (const auto& row : result_.rows()) {
+      writer_.write(to_topic(row));
+      if (!o_.quiet) print_row(row, "resumed station");
+    }
+    if (!result_.rows().empty()) {
+      const auto& last = result_.rows().back().station;
+      detector_.resume(last.t_s, last.md_m, result_.rows().size());
+    }
+  }
+
+  void on_station(survey::Station s) {
+    if (o_.survey.depth_sd_m >= 0) s.md_sd_m = o_.survey.depth_sd_m;
     try {
-      const survey::SurveyRow& row = result.add(s);
-      store.append(row);          // on disk (fsync'ed) before anyone is told
-      writer.write(to_topic(row));
-      if (!o.quiet) print_row(row, "station");
+      const survey::SurveyRow& row = result_.add(s);
+      store_.append(row);  // on disk (fsync'ed) before anyone is told
+      writer_.write(to_topic(row));
+      if (!o_.quiet) print_row(row, "station");
     } catch (const survey::StationError& e) {
       // Kept out of the geometry, but said and counted: never dropped in silence.
-      ++refused;
-      last_error = std::string("station refused: ") + e.what();
-      note(last_error);
+      ++refused_;
+      last_error_ = std::string("station refused: ") + e.what();
+      note(last_error_);
     }
-  };
-  survey::StationDetector detector(components::make_detector_options(o.survey), on_station, note);
-  if (!result.rows().empty()) {
-    const auto& last = result.rows().back().station;
-    detector.resume(last.t_s, last.md_m, result.rows().size());
   }
 
-  std::cerr << kProgram << ": " << conn.transport->name() << ", tool '" << o.tool_id << "': " << attitude_topic << " + "
-            << transport::topic_names::kDepth << " -> " << survey_topic << ", file " << o.file << std::endl;
-  const auto counters = [&] {
-    const auto& c = detector.counters();
-    return components::CounterList{{"stations", result.rows().size()},
-                                   {"resumed_stations", store.resumed()},
-                                   {"failed_qc", result.failed_qc()},
-                                   {"refused_stations", refused},
+  components::CounterList counters() const {
+    const auto& c = detector_.counters();
+    return components::CounterList{{"stations", result_.rows().size()},
+                                   {"resumed_stations", store_.resumed()},
+                                   {"failed_qc", result_.failed_qc()},
+                                   {"refused_stations", refused_},
                                    {"attitude_windows", c.windows},
                                    {"invalid_windows", c.invalid_windows},
                                    {"moving_windows", c.moving_windows},
@@ -103,87 +138,98 @@ int run_live_survey(const LiveOptions& o) {
                                    {"same_stop_windows", c.same_stop_windows},
                                    {"combined_windows", c.combined_windows},
                                    {"repeat_stops", c.repeat_stops},
-                                   {"depth_messages", depth_messages},
-                                   {"other_tool_messages", other_tool},
-                                   {"attitude_gaps", continuity.gaps()},
-                                   {"attitude_windows_missing", continuity.windows_missing()},
-                                   {"readers", writer.matched_readers()}};
-  };
-  const auto t0 = Clock::now();
-  const auto enough = [&] { return o.count > 0 && result.rows().size() >= static_cast<std::size_t>(o.count); };
-  topics::Attitude a;
-  topics::MeasuredDepth d;
-  bool attitude_matched = false, depth_matched = false;
+                                   {"depth_messages", depth_messages_},
+                                   {"other_tool_messages", other_tool_},
+                                   {"attitude_gaps", continuity_.gaps()},
+                                   {"attitude_windows_missing", continuity_.windows_missing()},
+                                   {"readers", writer_.matched_readers()}};
+  }
+
+  bool enough() const { return o_.count > 0 && result_.rows().size() >= static_cast<std::size_t>(o_.count); }
+
   // Until the first attitude of this tool: what the survey waits for, at 3 s, 6 s, 12 s..., with the
   // tool ids it hears instead (a --tool-id that no one publishes would otherwise wait in silence).
-  bool heard_tool = false;
-  auto last_attitude = Clock::now();
-  std::set<std::string> other_tool_ids;
-  double next_silence_note_s = 3;
-  const auto other_tool_message = [&](const std::string& id) {
-    ++other_tool;
-    other_tool_ids.insert(id);
-  };
-  status.publish("running", counters());
-  while (!components::g_stop && !enough()) {
-    if (const double waited_s = std::chrono::duration<double>(Clock::now() - t0).count();
-        !heard_tool && waited_s >= next_silence_note_s) {
-      next_silence_note_s *= 2;
+  // Each input's match is said once: an operator (or a test) knows they are connected.
+  void say_what_it_waits_for() {
+    if (const double waited_s = std::chrono::duration<double>(Clock::now() - t0_).count();
+        !heard_tool_ && waited_s >= next_silence_note_s_) {
+      next_silence_note_s_ *= 2;
       std::string ids;
-      for (const auto& id : other_tool_ids) ids += (ids.empty() ? "'" : ", '") + id + "'";
-      note("no attitude for tool '" + o.tool_id + "' on " + attitude_topic + " for " + std::to_string(static_cast<int>(waited_s)) +
-           " s (" + std::to_string(attitude.matched_writers()) + " writer(s) matched); " +
+      for (const auto& id : other_tool_ids_) ids += (ids.empty() ? "'" : ", '") + id + "'";
+      note("no attitude for tool '" + o_.tool_id + "' on " + attitude_topic_ + " for " +
+           std::to_string(static_cast<int>(waited_s)) + " s (" + std::to_string(attitude_.matched_writers()) +
+           " writer(s) matched); " +
            (ids.empty() ? std::string("no other tool heard either") : "heard tool id(s) " + ids + " (choose with --tool-id)"));
     }
-    // Said once each: an operator (or a test) knows the inputs are connected before the run starts.
-    if (!attitude_matched && attitude.matched_writers() > 0) {
-      attitude_matched = true;
-      note("attitude writer matched on " + attitude_topic);
+    if (!attitude_matched_ && attitude_.matched_writers() > 0) {
+      attitude_matched_ = true;
+      note("attitude writer matched on " + attitude_topic_);
     }
-    if (!depth_matched && depth.matched_writers() > 0) {
-      depth_matched = true;
+    if (!depth_matched_ && depth_.matched_writers() > 0) {
+      depth_matched_ = true;
       note("depth writer matched on " + std::string(transport::topic_names::kDepth));
     }
-    if (o.timeout_s > 0 && std::chrono::duration<double>(Clock::now() - t0).count() > o.timeout_s) {
-      status.publish("failed", counters(), "timed out");
-      components::print_error(kProgram, "timed out with " + std::to_string(result.rows().size()) + " of " +
-                                            std::to_string(o.count) + " stations");
-      return 1;
-    }
-    attitude.wait(std::chrono::milliseconds(100));
-    // Depth first: a window is decided once the depth after its end is known.
-    while (depth.take(d)) {
+  }
+
+  void other_tool_message(const std::string& id) {
+    ++other_tool_;
+    other_tool_ids_.insert(id);
+  }
+
+  void take_depths() {
+    topics::MeasuredDepth d;
+    while (depth_.take(d)) {
       if ((d.flags & topics::DEPTH_VALID) == 0) continue;
-      if (!d.tool_id.empty() && d.tool_id != o.tool_id) {
+      if (!d.tool_id.empty() && d.tool_id != o_.tool_id) {
         other_tool_message(d.tool_id);
         continue;
       }
-      ++depth_messages;
-      detector.add_depth(from_topic(d));
+      ++depth_messages_;
+      detector_.add_depth(from_topic(d));
     }
-    // The run ended (or the estimator stopped) during a stop: its station is due, not held forever.
-    if (detector.stop_open() && Clock::now() - last_attitude > std::chrono::seconds(kSilenceFlushS)) detector.flush();
-    while (attitude.take(a)) {
-      last_attitude = Clock::now();
-      if (!a.tool_id.empty() && a.tool_id != o.tool_id) {
+  }
+
+  void take_attitudes() {
+    topics::Attitude a;
+    while (attitude_.take(a)) {
+      last_attitude_ = Clock::now();
+      if (!a.tool_id.empty() && a.tool_id != o_.tool_id) {
         other_tool_message(a.tool_id);
         continue;
       }
-      heard_tool = true;
+      heard_tool_ = true;
       const Estimate e = components::from_topic(a);
-      if (continuity.add(e.t_start, e.t_end) > 0) note(continuity.last_note());
-      detector.add_attitude(e, a.tool_id);
+      if (continuity_.add(e.t_start, e.t_end) > 0) note(continuity_.last_note());
+      detector_.add_attitude(e, a.tool_id);
     }
-    if (status.due()) status.publish(refused ? "degraded" : "running", counters(), last_error);
   }
-  // The stop in progress when asked to stop has its station now: its windows are all there are.
-  if (!enough()) detector.flush();
-  if (result.rows().empty()) note(survey::no_station_advice(detector.counters(), o.estimator, detector.still_tolerance_m()));
-  status.publish("stopping", counters(), last_error);
-  std::cerr << kProgram << ": " << result.rows().size() << " station(s) (" << store.resumed() << " resumed), "
-            << result.failed_qc() << " failed QC, " << refused << " refused" << std::endl;
-  if (enough()) components::sleep_while_running(o.linger_s);
-  return 0;
+
+  const LiveOptions& o_;
+  survey::Survey result_;
+  SurveyStore store_;
+  components::Connection conn_;
+  std::string survey_topic_, attitude_topic_;
+  transport::Writer<topics::SurveyStation> writer_;
+  transport::Reader<topics::Attitude> attitude_;
+  transport::Reader<topics::MeasuredDepth> depth_;
+  components::StatusReporter status_;
+  survey::StationDetector detector_;
+  AttitudeContinuity continuity_;
+  std::uint64_t refused_ = 0, depth_messages_ = 0, other_tool_ = 0;
+  std::string last_error_;
+  Clock::time_point t0_, last_attitude_;
+  bool attitude_matched_ = false, depth_matched_ = false, heard_tool_ = false;
+  std::set<std::string> other_tool_ids_;
+  double next_silence_note_s_ = 3;
+};
+
+}  // namespace
+
+int run_live_survey(const LiveOptions& o) {
+  if (o.tool_id.empty()) throw std::invalid_argument("--tool-id is required: it names the tool surveyed and its topic");
+  if (o.file.empty()) throw std::invalid_argument("--file is required: the survey is kept there across restarts");
+  LiveSurvey survey(o);
+  return survey.run();
 }
 
 }  // namespace plumb::survey_component
