@@ -25,6 +25,13 @@ std::vector<Term> depth_and_sensors() {
           {"MSZ", "MSZ", 0.0016, "-", S}};
 }
 
+// Axial interference, sag and misalignment as revision 5 has them: the same in every revision 5 code.
+std::vector<Term> revision5_alignment() {
+  return {{"AMIL", "AMIL", 220, "nT", S},    {"SAGE", "SAGE", 0.2, "deg", S},  {"XYM1", "XYM1", 0.1, "deg", S},
+          {"XYM2", "XYM2", 0.1, "deg", S},   {"XYM3E", "XYM3E", 0.3, "deg", R}, {"XYM4E", "XYM4E", 0.3, "deg", R},
+          {"XCLA", "XCLA", 0.167, "-", R},   {"XCLH", "XCLH", 0.167, "-", R}};
+}
+
 void append(std::vector<Term>& to, const std::vector<Term>& more) { to.insert(to.end(), more.begin(), more.end()); }
 
 ToolCode rev4() {
@@ -55,15 +62,8 @@ ToolCode rev5(bool owsg) {
                    {"DBH-OS", "DBH", 3359, "deg.nT", G},
                    {"DBH-OH", "DBH", 2840, "deg.nT", G},
                    {"DBH-OI", "DBH", 356, "deg.nT", G},
-                   {"DBHR", "DBH", 3000, "deg.nT", R},
-                   {"AMIL", "AMIL", 220, "nT", S},
-                   {"SAGE", "SAGE", 0.2, "deg", S},
-                   {"XYM1", "XYM1", 0.1, "deg", S},
-                   {"XYM2", "XYM2", 0.1, "deg", S},
-                   {"XYM3E", "XYM3E", 0.3, "deg", R},
-                   {"XYM4E", "XYM4E", 0.3, "deg", R},
-                   {"XCLA", "XCLA", 0.167, "-", R},
-                   {"XCLH", "XCLH", 0.167, "-", R}});
+                   {"DBHR", "DBH", 3000, "deg.nT", R}});
+  append(t.terms, revision5_alignment());
   return t;
 }
 
@@ -76,15 +76,8 @@ ToolCode ifr1() {
                    {"DBH-U", "DBH", 1271, "deg.nT", W},
                    {"DBH-CI", "DBH", 712, "deg.nT", G},
                    {"DBH-OI", "DBH", 356, "deg.nT", G},
-                   {"DBHR", "DBH", 3000, "deg.nT", R},
-                   {"AMIL", "AMIL", 220, "nT", S},
-                   {"SAGE", "SAGE", 0.2, "deg", S},
-                   {"XYM1", "XYM1", 0.1, "deg", S},
-                   {"XYM2", "XYM2", 0.1, "deg", S},
-                   {"XYM3E", "XYM3E", 0.3, "deg", R},
-                   {"XYM4E", "XYM4E", 0.3, "deg", R},
-                   {"XCLA", "XCLA", 0.167, "-", R},
-                   {"XCLH", "XCLH", 0.167, "-", R}});
+                   {"DBHR", "DBH", 3000, "deg.nT", R}});
+  append(t.terms, revision5_alignment());
   return t;
 }
 
