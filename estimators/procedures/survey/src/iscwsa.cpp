@@ -64,7 +64,9 @@ struct TermEffect {
   std::vector<Vector3d> dia;  // the (MD, I, A) change itself
 };
 
+// A lone station (the tie-in, the first of a live survey) has no course yet: nothing to scale.
 double course_coefficient(const std::vector<Rad>& s, std::size_t k) {
+  if (s.size() < 2) return 1.0;
   const std::size_t c = std::max<std::size_t>(k, 1);
   const double course = s[c].md - s[c - 1].md;
   return std::max(1.0, std::sqrt(10.0 / course));
