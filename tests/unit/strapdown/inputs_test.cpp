@@ -178,6 +178,55 @@ TEST(StrapdownInputs, SensorOffTheToolAxisIsLearntWhileTurning) {
   EXPECT_GT(without.rms_z(), 2.0 * with_states.rms_z());  // what the states are for
 }
 
+// The same offset on a string whose spin changes: the accelerometers feel its change too (the
+// tangential w' x r, here in each raised-cosine start and stop of the 30 rpm segments, 3 cm off the
+// axis). Taken out with the centripetal term, the end position stays within its sigma.
+TEST(StrapdownInputs, SpinThatChangesIsTakenOutOfTheAccelerometers) {
+  const auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 100, 6);
+  sim::DrillingSimulator simulator(scenario);
+  std::vector<TruthSample> truth;
+  std::vector<Sample> samples = simulator.run(&truth);
+  const Eigen::Vector2d offset(0.03, -0.02);
+  for (std::size_t i = samples.size(); i-- > 0;) {
+    Sample& s = samples[i];
+    const std::size_t a = i == 0 ? 0 : i - 1, b = std::min(i + 1, samples.size() - 1);
+    const double spin_change = (samples[b].w.z() - samples[a].w.z()) / (samples[b].t - samples[a].t);
+    s.f += centripetal_matrix(s.w) * offset;
+    s.f.head<2>() += spin_change * Eigen::Vector2d(-offset.y(), offset.x());
+  }
+  estimator::Parameters p = parameters_for(scenario);
+  p["lever_arm_sd_m"] = "0.03";
+  const RunMetrics m = score_drilling(samples, truth, 100, 32, p, nullptr);
+  std::printf("offset 36 mm, spin changing: max error I %.3f T %.3f deg, RMS(error/sigma) %.2f, end %.3f m, "
+              "end RMS(error/sigma) %.2f\n",
+              m.max_inc_err_deg, m.max_tf_err_deg, m.rms_z(), m.end_position_err_m, std::sqrt(m.end_position_z2 / 3));
+  EXPECT_LT(m.rms_z(), 2.0);
+  // Without the tangential term: 0.21 m, RMS(error/sigma) 2.8.
+  EXPECT_LT(m.end_position_err_m, 0.1);
+  EXPECT_LT(std::sqrt(m.end_position_z2 / 3), 2.0);
+}
+
+// Lateral vibration of 0.3 g while drilling, read at 20 Hz: the readings cannot resolve it, and
+// the velocity they integrate wanders far beyond the accelerometers' stated noise. The lateral
+// velocity update measures that wander in its innovations and carries it in the velocity's
+// process noise: the end position and its sigma agree.
+TEST(StrapdownInputs, VibrationTheReadingsCannotResolveIsMeasured) {
+  auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 20, 6);
+  scenario.vibration.lateral_rms = 3.0;
+  sim::DrillingSimulator simulator(scenario);
+  std::vector<TruthSample> truth;
+  const std::vector<Sample> samples = simulator.run(&truth);
+  const RunMetrics m = score_drilling(samples, truth, 20, 32, parameters_for(scenario), nullptr);
+  std::printf("0.3 g vibration at 20 Hz: max error I %.3f A %.3f T %.3f deg, RMS(error/sigma) %.2f, end %.3f m, "
+              "end RMS(error/sigma) %.2f\n",
+              m.max_inc_err_deg, m.max_azi_err_deg, m.max_tf_err_deg, m.rms_z(), m.end_position_err_m,
+              std::sqrt(m.end_position_z2 / 3));
+  // Without the measured wander: RMS(error/sigma) 4.0, the azimuth 0.44 deg off.
+  EXPECT_LT(m.rms_z(), 2.0);
+  EXPECT_LT(m.max_azi_err_deg, 0.2);
+  EXPECT_LT(std::sqrt(m.end_position_z2 / 3), 2.0);
+}
+
 // A z gyro that reads 400 ppm too much: each 30 rpm rotary segment of 160 s turns the tool
 // through 29,000 degrees, 11.5 degrees of toolface. The filter's scale-factor state, its prior
 // from the datasheet figure, keeps the toolface sigma honest through the segment and learns the

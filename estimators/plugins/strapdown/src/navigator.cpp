@@ -19,6 +19,10 @@ using namespace index;
 namespace {
 // Seconds of motion the lateral velocity's measured excess remembers.
 constexpr double kLateralMemoryS = 10;
+// A drilling tool's lateral velocity, 1 sigma, is at most this (m/s): vibration of a few millimetres
+// at tens of hertz. Innovations beyond it are the navigator's own velocity wandering (a turning tool
+// read a few times per revolution: vibration the readings cannot resolve), process noise.
+constexpr double kLateralVelocityCap = 0.05;
 
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
@@ -770,7 +774,14 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   mech_.finish(x_, &integrals_);
   const StateMatrix phi = ErrorStateFilter::transition(integrals_, mech_.earth_rate());
   const double dt = integrals_.dt;
-  kf_.predict(phi, dt, noise_);
+  ProcessNoise noise = noise_;
+  if (!still_state_.still) {
+    // The lateral innovations' excess beyond what a tool's lateral velocity can be: the velocity's
+    // process noise carries it (isotropic, as the accelerometers' white noise).
+    const double beyond = (lateral_excess_.array() - kLateralVelocityCap * kLateralVelocityCap).max(0.0).mean();
+    noise.accel_vrw = std::sqrt(noise.accel_vrw * noise.accel_vrw + beyond * config_.kf_rate_hz);
+  }
+  kf_.predict(phi, dt, noise);
   integrals_.clear();
   last_epoch_t_ = in.t;
   correction_.setZero();
@@ -787,12 +798,14 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
     }
     if (config_.lateral_velocity_update) {
       Measurement<2> m = lateral_velocity(x_, config_.nhc_sd);
-      // Covariance matching over the last kLateralMemoryS of motion: the measured excess, not the
-      // stated sigma, when the tool shakes more than it says.
+      // Covariance matching over the last kLateralMemoryS of motion: the innovations' mean square
+      // beyond what the covariance explains is the tool's real lateral velocity (up to
+      // kLateralVelocityCap; the rest is the velocity's process noise, epoch()).
       const Eigen::Matrix<double, kStates, 2> pht = kf_.covariance().lazyProduct(m.h.transpose());
       const Eigen::Vector2d excess = m.r.array().square() - (m.h.lazyProduct(pht)).diagonal().array();
       lateral_excess_ += std::min(1.0, 1.0 / (kLateralMemoryS * config_.kf_rate_hz)) * (excess - lateral_excess_);
-      m.noise.diagonal() = lateral_excess_.cwiseMax(config_.nhc_sd * config_.nhc_sd);
+      m.noise.diagonal() =
+          lateral_excess_.cwiseMax(config_.nhc_sd * config_.nhc_sd).cwiseMin(kLateralVelocityCap * kLateralVelocityCap);
       apply(kf_.update(m.r, m.h, m.noise));
       count("lateral_velocity_updates");
     }
