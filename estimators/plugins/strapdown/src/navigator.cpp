@@ -330,6 +330,9 @@ StillnessInput Navigator::detector_input(const Input& in) const {
     si.w_minus_expected = in.w;
     si.extra_gyro_tol = kEarthRate + 3.0 * config_.gyro_bias_sd;
     si.g = config_.gravity.value_or(in.f.norm());
+    // A given gravity against readings whose bias is not known yet: 3 sigma of the stated bias
+    // along the specific force (the filter takes it out once aligned).
+    if (config_.gravity) si.extra_accel_tol = 3.0 * config_.accel_bias_sd;
   }
   if (in.b && detector_.config().mode == StillnessConfig::Mode::Magnitude && config_.use_magnetometer && b0_) {
     si.field_deviation_uT = in.b->norm() - *b0_;
@@ -787,14 +790,22 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   correction_.setZero();
 
   if (still_state_.still) {
-    const Measurement<3> m = zero_velocity(x_, config_.zupt_sd);
+    // A drilling string that slows over seconds looks still to the inertial sensors before it is
+    // (depth, when there is some, sees the creep): in the first seconds of such a stop the tool may
+    // creep at the rate of penetration, and a stop that ends within them was none (no stop updates
+    // at its end).
+    const bool settling = drilling_tool_ && !latest_depth_ &&
+                          in.t - still_state_.period_start < config_.min_still_s + config_.stop_settle_s;
+    stop_settled_ = !settling;
+    const Measurement<3> m = zero_velocity(x_, settling ? std::max(config_.zupt_sd, config_.rop_sd) : config_.zupt_sd);
     apply(kf_.update(m.r, m.h, m.noise));
     count("zero_velocity_updates");
-    still_updates(false);
+    if (!settling) still_updates(false);
   } else {
     if (still_state_.ended) {
-      still_updates(true);
+      if (stop_settled_) still_updates(true);
       late_stop_end();
+      stop_settled_ = false;
     }
     if (config_.lateral_velocity_update) {
       Measurement<2> m = lateral_velocity(x_, config_.nhc_sd);

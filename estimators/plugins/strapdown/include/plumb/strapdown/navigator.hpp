@@ -78,6 +78,7 @@ struct NavigatorConfig {
   // a foot, a hand-carried or a vehicle-mounted sensor does not.
   bool lateral_velocity_update = true;
   double nhc_sd = 0.01;                // m/s
+  double stop_settle_s = 2;            // a drilling tool may creep this long into a confirmed stop (s)
   double rop_sd = 0.02;                // rate of penetration, 1 sigma (m/s): the speed a stop's end may be seen late at
   double depth_sd = 0.01;              // m
   double depth_interval_s = 1;
@@ -247,6 +248,7 @@ class Navigator {
   std::size_t tally_stops_ = 0;
   double tally_distance_ = 0;
   double stop_started_t_ = 0;
+  bool stop_settled_ = false;  // the still period in progress has outlasted stop_settle_s
   // Mean square of the lateral-velocity innovations beyond what the filter's covariance explains
   // (m^2/s^2, x and y): the tool's real lateral velocity (vibration, whirl, what the lever arm's
   // model leaves), used where it is larger than nhc_sd^2.
