@@ -778,7 +778,7 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   const StateMatrix phi = ErrorStateFilter::transition(integrals_, mech_.earth_rate());
   const double dt = integrals_.dt;
   ProcessNoise noise = noise_;
-  if (!still_state_.still) {
+  if (!still_state_.still && drilling_tool_) {
     // The lateral innovations' excess beyond what a tool's lateral velocity can be: the velocity's
     // process noise carries it (isotropic, as the accelerometers' white noise).
     const double beyond = (lateral_excess_.array() - kLateralVelocityCap * kLateralVelocityCap).max(0.0).mean();
@@ -809,14 +809,16 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
     }
     if (config_.lateral_velocity_update) {
       Measurement<2> m = lateral_velocity(x_, config_.nhc_sd);
-      // Covariance matching over the last kLateralMemoryS of motion: the innovations' mean square
-      // beyond what the covariance explains is the tool's real lateral velocity (up to
-      // kLateralVelocityCap; the rest is the velocity's process noise, epoch()).
-      const Eigen::Matrix<double, kStates, 2> pht = kf_.covariance().lazyProduct(m.h.transpose());
-      const Eigen::Vector2d excess = m.r.array().square() - (m.h.lazyProduct(pht)).diagonal().array();
-      lateral_excess_ += std::min(1.0, 1.0 / (kLateralMemoryS * config_.kf_rate_hz)) * (excess - lateral_excess_);
-      m.noise.diagonal() =
-          lateral_excess_.cwiseMax(config_.nhc_sd * config_.nhc_sd).cwiseMin(kLateralVelocityCap * kLateralVelocityCap);
+      if (drilling_tool_) {
+        // Covariance matching over the last kLateralMemoryS of motion: the innovations' mean square
+        // beyond what the covariance explains is the tool's real lateral velocity (up to
+        // kLateralVelocityCap; the rest is the velocity's process noise, epoch()).
+        const Eigen::Matrix<double, kStates, 2> pht = kf_.covariance().lazyProduct(m.h.transpose());
+        const Eigen::Vector2d excess = m.r.array().square() - (m.h.lazyProduct(pht)).diagonal().array();
+        lateral_excess_ += std::min(1.0, 1.0 / (kLateralMemoryS * config_.kf_rate_hz)) * (excess - lateral_excess_);
+        m.noise.diagonal() =
+            lateral_excess_.cwiseMax(config_.nhc_sd * config_.nhc_sd).cwiseMin(kLateralVelocityCap * kLateralVelocityCap);
+      }
       apply(kf_.update(m.r, m.h, m.noise));
       count("lateral_velocity_updates");
     }
