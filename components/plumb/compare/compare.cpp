@@ -206,6 +206,41 @@ int run(const CompareOptions& o) {
   return 0;
 }
 
+// --scenario drilling's own options: the runs' grades and rates, and the families of depth and
+// sensor noise the navigator is fed.
+void add_drilling_options(CLI::App& cmd, CompareOptions& o) {
+  cmd.add_option("--grade", o.grades, "drilling: IMU grades (navigation, tactical, mems, perfect)")->capture_default_str();
+  cmd.add_option("--drilling-rate-hz", o.drilling_rates, "drilling: sampling rates, Hz")->capture_default_str();
+  cmd.add_option("--depth", o.depth,
+                  "drilling: how measured depth reaches the navigator, one or more of: yes (a depth sensor on every "
+                  "row), no (none), both (yes and no), rig (as rigs deliver it: a report every second, rounded, late, "
+                  "held or left empty between reports), tally (no depth sensor: the pipe tally, each joint's measured "
+                  "length, as pipe_tally_m), all (yes, no, rig and tally); one table row per run of each")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd.add_option("--depth-sd", o.depth_sd_m,
+                  "drilling, --depth yes or rig: the simulated depth sensor's white noise, 1 sigma, m (0.01-0.05 is "
+                  "a rig's; the navigator is not told: give --param depth_sd_m=... to tell it)")
+      ->capture_default_str();
+  cmd.add_option("--rig-interval", o.rig_interval_s, "drilling, --depth rig: seconds between depth reports")->capture_default_str();
+  cmd.add_option("--rig-quantum", o.rig_quantum_m,
+                  "drilling, --depth rig: each report rounded to this step, m (0.01; 0.03048 for 0.1 ft; 0: not rounded)")
+      ->capture_default_str();
+  cmd.add_option("--rig-late", o.rig_late_s, "drilling, --depth rig: each report tells the depth this many seconds before it arrives")
+      ->capture_default_str();
+  cmd.add_flag("--rig-empty", o.rig_empty,
+                "drilling, --depth rig: rows between reports carry no depth (an empty depth_m cell) instead of the last report");
+  cmd.add_option("--tally-sd", o.tally_sd_m,
+                  "drilling, --depth tally: how well each joint is measured, 1 sigma, m (the joints are drawn with it "
+                  "and the navigator told it as pipe_tally_sd_m)")
+      ->capture_default_str();
+  cmd.add_option("--noisier", o.noisier,
+                  "drilling: the simulated gyro angle random walk and accelerometer noise are this many times their "
+                  "grade's preset (e.g. --grade mems --noisier 1.5); the navigator is told only the grade")
+      ->capture_default_str();
+  cmd.add_flag("--no-magnetometer", o.no_magnetometer, "drilling: the tool has no magnetometer");
+}
+
 }  // namespace
 
 void add_compare_verb(CLI::App& app, Verbs& verbs) {
@@ -238,36 +273,7 @@ void add_compare_verb(CLI::App& app, Verbs& verbs) {
                   "(default estimator strapdown), beside the gyro inclinometer source's figures")
       ->check(CLI::IsMember({"platform", "drilling"}))
       ->capture_default_str();
-  cmd->add_option("--grade", o->grades, "drilling: IMU grades (navigation, tactical, mems, perfect)")->capture_default_str();
-  cmd->add_option("--drilling-rate-hz", o->drilling_rates, "drilling: sampling rates, Hz")->capture_default_str();
-  cmd->add_option("--depth", o->depth,
-                  "drilling: how measured depth reaches the navigator, one or more of: yes (a depth sensor on every "
-                  "row), no (none), both (yes and no), rig (as rigs deliver it: a report every second, rounded, late, "
-                  "held or left empty between reports), tally (no depth sensor: the pipe tally, each joint's measured "
-                  "length, as pipe_tally_m), all (yes, no, rig and tally); one table row per run of each")
-      ->delimiter(',')
-      ->capture_default_str();
-  cmd->add_option("--depth-sd", o->depth_sd_m,
-                  "drilling, --depth yes or rig: the simulated depth sensor's white noise, 1 sigma, m (0.01-0.05 is "
-                  "a rig's; the navigator is not told: give --param depth_sd_m=... to tell it)")
-      ->capture_default_str();
-  cmd->add_option("--rig-interval", o->rig_interval_s, "drilling, --depth rig: seconds between depth reports")->capture_default_str();
-  cmd->add_option("--rig-quantum", o->rig_quantum_m,
-                  "drilling, --depth rig: each report rounded to this step, m (0.01; 0.03048 for 0.1 ft; 0: not rounded)")
-      ->capture_default_str();
-  cmd->add_option("--rig-late", o->rig_late_s, "drilling, --depth rig: each report tells the depth this many seconds before it arrives")
-      ->capture_default_str();
-  cmd->add_flag("--rig-empty", o->rig_empty,
-                "drilling, --depth rig: rows between reports carry no depth (an empty depth_m cell) instead of the last report");
-  cmd->add_option("--tally-sd", o->tally_sd_m,
-                  "drilling, --depth tally: how well each joint is measured, 1 sigma, m (the joints are drawn with it "
-                  "and the navigator told it as pipe_tally_sd_m)")
-      ->capture_default_str();
-  cmd->add_option("--noisier", o->noisier,
-                  "drilling: the simulated gyro angle random walk and accelerometer noise are this many times their "
-                  "grade's preset (e.g. --grade mems --noisier 1.5); the navigator is told only the grade")
-      ->capture_default_str();
-  cmd->add_flag("--no-magnetometer", o->no_magnetometer, "drilling: the tool has no magnetometer");
+  add_drilling_options(*cmd, *o);
   // On a recorded run instead of simulated ones.
   auto f = std::make_shared<CompareFileOptions>();
   cmd->add_option("-i,--input", f->input,
