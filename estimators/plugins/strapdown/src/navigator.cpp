@@ -17,6 +17,13 @@ namespace plumb::strapdown {
 using namespace index;
 
 namespace {
+// Seconds of motion the lateral velocity's measured excess remembers.
+constexpr double kLateralMemoryS = 10;
+// A drilling tool's lateral velocity, 1 sigma, is at most this (m/s): vibration of a few millimetres
+// at tens of hertz. Innovations beyond it are the navigator's own velocity wandering (a turning tool
+// read a few times per revolution: vibration the readings cannot resolve), process noise.
+constexpr double kLateralVelocityCap = 0.05;
+
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 // Magnetometer readings below this are "no magnetometer" (a logger without one writes zeros).
@@ -98,7 +105,7 @@ void Navigator::reset() {
   bg_.setZero();
   ba_.setZero();
   lever_.setZero();
-  gyro_scale_ = 0;
+  gyro_spin_.setZero();
   mag_axial_ = 0;
   lever_model_ = false;
   kf_ = ErrorStateFilter();
@@ -286,12 +293,21 @@ void Navigator::shift_gyro(Input in, std::vector<Estimate>& out) {
   }
 }
 
-// A reading with the filter's estimates taken out: the biases and, turning, the centripetal
-// acceleration of the accelerometers' offset from the tool axis.
-ImuReading Navigator::reading(const Input& in) const {
+// A reading with the filter's estimates taken out: the biases, the gyros' response to the spin and,
+// turning, the centripetal acceleration of the accelerometers' offset from the tool axis and the
+// tangential one of a spin that changes (stick-slip), whose rate of change the reading before gives.
+ImuReading Navigator::reading(const Input& in, const Input* earlier) const {
   ImuReading r{in.t, in.f - ba_, in.w - bg_};
-  r.w.z() /= 1.0 + gyro_scale_;
-  if (lever_model_ && r.w.squaredNorm() > kTurningRate2) r.f.noalias() -= centripetal_matrix(r.w) * lever_;
+  r.w.z() /= 1.0 + gyro_spin_.z();
+  r.w.head<2>() -= gyro_spin_.head<2>() * r.w.z();
+  r.w.noalias() -= gyro_g_matrix(in.f) * gyro_g_;
+  if (lever_model_ && r.w.squaredNorm() > kTurningRate2) {
+    r.f.noalias() -= centripetal_matrix(r.w) * lever_;
+    if (earlier != nullptr && in.t > earlier->t) {
+      const double spin_rate_change = (in.w.z() - earlier->w.z()) / ((in.t - earlier->t) * (1.0 + gyro_spin_.z()));
+      r.f.head<2>() -= spin_rate_change * Eigen::Vector2d(-lever_.y(), lever_.x());
+    }
+  }
   if (config_.samples_are_means && dt_nominal_ > 0) r.f = mean_to_instant(r.f, r.w, dt_nominal_);
   return r;
 }
@@ -483,7 +499,7 @@ void Navigator::process(const Input& in, std::vector<Estimate>& out) {
     before_alignment(in, out);
     return;
   }
-  const ImuReading a = reading(*prev_), b = reading(in);
+  const ImuReading a = reading(*prev_, prev2_ ? &*prev2_ : nullptr), b = reading(in, &*prev_);
   if (prev2_) {
     const ImuReading before = reading(*prev2_);
     mech_.step(a, b, &before);
@@ -613,7 +629,7 @@ void Navigator::align(const Input& in) {
   bg_.setZero();
   ba_.setZero();
   lever_.setZero();
-  gyro_scale_ = 0;
+  gyro_spin_.setZero();
   mag_axial_ = 0;
   const double dt = dt_nominal_ > 0 ? dt_nominal_ : 0.01;
   adopt_measured_noise(dt);
@@ -628,6 +644,7 @@ void Navigator::align(const Input& in) {
   aligned_at_ = in.t;
   // The still period of the alignment is the tally's stop 0, not a connection.
   stop_started_t_ = std::numeric_limits<double>::infinity();
+  lateral_excess_.setConstant(config_.nhc_sd * config_.nhc_sd);
   last_epoch_t_ = in.t;
   correction_.setZero();
 
@@ -698,6 +715,9 @@ StateMatrix Navigator::initial_covariance(const Eigen::Vector3d& f, double headi
   if (lever_model_) p0.block<2, 2>(kLever, kLever).diagonal().setConstant(config_.lever_arm_sd * config_.lever_arm_sd);
   if (drilling_tool_) {
     p0(kGyroScale, kGyroScale) = config_.gyro_scale_sd * config_.gyro_scale_sd;
+    p0.block<2, 2>(kGyroLeak, kGyroLeak).diagonal().setConstant(config_.gyro_misalignment_sd * config_.gyro_misalignment_sd);
+    // g_s and g_a are each the mean of two independent elements.
+    p0.block<2, 2>(kGyroG, kGyroG).diagonal().setConstant(0.5 * config_.gyro_g_sensitivity_sd * config_.gyro_g_sensitivity_sd);
     if (use_mag_) p0(kMagAxial, kMagAxial) = config_.mag_axial_bias_sd * config_.mag_axial_bias_sd;
   }
   if (config_.gravity) {
@@ -728,7 +748,8 @@ void Navigator::first_measurements(const StillStats& stats, double sd_mean_f, do
     count("tilt_updates");
   }
   {
-    const Measurement<3> m = zero_rate(x_, bg_, mech_.earth_rate(), w, std::max(sd_w / std::sqrt(n), kMinMeanSdGyro));
+    const Measurement<3> m =
+        zero_rate(x_, bg_, gyro_g_, mech_.earth_rate(), w, f, std::max(sd_w / std::sqrt(n), kMinMeanSdGyro));
     apply(kf_.update(m.r, m.h, m.noise));
     count("zero_rate_updates");
   }
@@ -740,7 +761,7 @@ void Navigator::first_measurements(const StillStats& stats, double sd_mean_f, do
 }
 
 void Navigator::apply(const StateVector& dx) {
-  feed_back(dx, x_, bg_, ba_, &lever_, &gyro_scale_, &mag_axial_);
+  feed_back(dx, x_, bg_, ba_, &lever_, &gyro_spin_, &mag_axial_, &gyro_g_);
   correction_ += dx;
   g_ -= dx[kGravity];
   mech_.set_gravity(g_);
@@ -753,7 +774,14 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   mech_.finish(x_, &integrals_);
   const StateMatrix phi = ErrorStateFilter::transition(integrals_, mech_.earth_rate());
   const double dt = integrals_.dt;
-  kf_.predict(phi, dt, noise_);
+  ProcessNoise noise = noise_;
+  if (!still_state_.still) {
+    // The lateral innovations' excess beyond what a tool's lateral velocity can be: the velocity's
+    // process noise carries it (isotropic, as the accelerometers' white noise).
+    const double beyond = (lateral_excess_.array() - kLateralVelocityCap * kLateralVelocityCap).max(0.0).mean();
+    noise.accel_vrw = std::sqrt(noise.accel_vrw * noise.accel_vrw + beyond * config_.kf_rate_hz);
+  }
+  kf_.predict(phi, dt, noise);
   integrals_.clear();
   last_epoch_t_ = in.t;
   correction_.setZero();
@@ -769,7 +797,15 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
       late_stop_end();
     }
     if (config_.lateral_velocity_update) {
-      const Measurement<2> m = lateral_velocity(x_, config_.nhc_sd);
+      Measurement<2> m = lateral_velocity(x_, config_.nhc_sd);
+      // Covariance matching over the last kLateralMemoryS of motion: the innovations' mean square
+      // beyond what the covariance explains is the tool's real lateral velocity (up to
+      // kLateralVelocityCap; the rest is the velocity's process noise, epoch()).
+      const Eigen::Matrix<double, kStates, 2> pht = kf_.covariance().lazyProduct(m.h.transpose());
+      const Eigen::Vector2d excess = m.r.array().square() - (m.h.lazyProduct(pht)).diagonal().array();
+      lateral_excess_ += std::min(1.0, 1.0 / (kLateralMemoryS * config_.kf_rate_hz)) * (excess - lateral_excess_);
+      m.noise.diagonal() =
+          lateral_excess_.cwiseMax(config_.nhc_sd * config_.nhc_sd).cwiseMin(kLateralVelocityCap * kLateralVelocityCap);
       apply(kf_.update(m.r, m.h, m.noise));
       count("lateral_velocity_updates");
     }
@@ -829,7 +865,7 @@ void Navigator::still_updates(bool period_end) {
   if (n >= StillnessConfig::kMinWindowSamples && (period_end || zaru_stats_.duration() >= config_.zaru_interval_s)) {
     const double sd_w = std::max(zaru_stats_.sample_sd_w(), noise_.gyro_arw / std::sqrt(dt));
     const Measurement<3> m =
-        zero_rate(x_, bg_, mech_.earth_rate(), zaru_stats_.mean_w(), std::max(sd_w / std::sqrt(n), kMinMeanSdGyro));
+        zero_rate(x_, bg_, gyro_g_, mech_.earth_rate(), zaru_stats_.mean_w(), zaru_stats_.mean_f(), std::max(sd_w / std::sqrt(n), kMinMeanSdGyro));
     apply(kf_.update(m.r, m.h, m.noise));
     count("zero_rate_updates");
     if (config_.tilt_update) {

@@ -64,6 +64,8 @@ struct NavigatorConfig {
   double gyro_bias_sd = 1.0 * 3.14159265358979323846 / 180.0 / 3600.0;  // rad/s, turn-on
   double accel_bias_sd = 0.3e-3 * 9.80665;                          // m/s^2
   double gyro_scale_sd = 100e-6;        // scale-factor error about the tool axis, 1 sigma (fraction)
+  double gyro_misalignment_sd = 0.1e-3; // x and y gyros' share of a rate about the tool axis, 1 sigma (rad)
+  double gyro_g_sensitivity_sd = 1.0 * 3.14159265358979323846 / 180.0 / 3600.0 / 9.80665;  // per element, 1 sigma (rad/s per m/s^2)
   double gyro_bias_instability = 0.0;  // rad/s reached over bias_time_s (random walk)
   double accel_bias_instability = 0.0;
   double bias_time_s = 3600;
@@ -136,7 +138,9 @@ class Navigator {
   const NavState& state() const { return x_; }
   const Eigen::Vector3d& gyro_bias() const { return bg_; }
   const Eigen::Vector3d& accel_bias() const { return ba_; }
-  double gyro_scale() const { return gyro_scale_; }
+  double gyro_scale() const { return gyro_spin_.z(); }
+  Eigen::Vector2d gyro_leak() const { return gyro_spin_.head<2>(); }
+  Eigen::Vector2d gyro_g() const { return gyro_g_; }
   double mag_axial_bias() const { return mag_axial_; }
   const StateMatrix& covariance() const { return kf_.covariance(); }
   bool still() const { return detector_.still(); }
@@ -171,7 +175,7 @@ class Navigator {
   void fill_attitude(Estimate& e, const NavState& x, const StateMatrix& p) const;
   void apply(const StateVector& dx);
   StillnessInput detector_input(const Input& in) const;
-  ImuReading reading(const Input& in) const;
+  ImuReading reading(const Input& in, const Input* earlier = nullptr) const;
   void refresh_noise(double dt);
   void refresh_detector_allowances();
   double field_azimuth() const;
@@ -211,7 +215,10 @@ class Navigator {
   NavState x_;
   Eigen::Vector3d bg_ = Eigen::Vector3d::Zero(), ba_ = Eigen::Vector3d::Zero();
   Eigen::Vector2d lever_ = Eigen::Vector2d::Zero();  // accelerometers' offset from the tool axis (x, y), m
-  double gyro_scale_ = 0;  // the z gyro's scale-factor error: it reads (1 + gyro_scale_) times the rate
+  // The gyros' response to a rate w about the tool axis beyond it: the x and y gyros read
+  // gyro_spin_.x() w and gyro_spin_.y() w (misalignment), the z gyro (1 + gyro_spin_.z()) w.
+  Eigen::Vector3d gyro_spin_ = Eigen::Vector3d::Zero();
+  Eigen::Vector2d gyro_g_ = Eigen::Vector2d::Zero();  // (g_s, g_a): see index::kGyroG
   double mag_axial_ = 0;   // the magnetometers' bias along the tool axis, uT
   bool lever_model_ = false;
   bool drilling_tool_ = false;  // a tool axis to turn about and move along (align())
@@ -240,6 +247,10 @@ class Navigator {
   std::size_t tally_stops_ = 0;
   double tally_distance_ = 0;
   double stop_started_t_ = 0;
+  // Mean square of the lateral-velocity innovations beyond what the filter's covariance explains
+  // (m^2/s^2, x and y): the tool's real lateral velocity (vibration, whirl, what the lever arm's
+  // model leaves), used where it is larger than nhc_sd^2.
+  Eigen::Vector2d lateral_excess_ = Eigen::Vector2d::Zero();
   std::string last_field_warning_;
   // Never silent (watch_before_alignment, watch_for_stops).
   NoiseFloor noise_floor_;
