@@ -182,7 +182,8 @@ const char* family_label(DepthFamily family) {
   return "?";
 }
 
-std::vector<DrillingRunResult> run_drilling_compare(const DrillingCompareConfig& config) {
+std::vector<DrillingRunResult> run_drilling_compare(const DrillingCompareConfig& config,
+                                                    const std::function<void(std::size_t, std::size_t)>& progress) {
   if (config.seeds < 1) throw std::invalid_argument("seeds must be at least 1");
   if (!(std::isfinite(config.noisier) && config.noisier > 0)) throw std::invalid_argument("the noise multiplier must be > 0");
   if (!(std::isfinite(config.depth_sd_m) && config.depth_sd_m >= 0)) throw std::invalid_argument("the depth noise must be >= 0 m");
@@ -195,12 +196,17 @@ std::vector<DrillingRunResult> run_drilling_compare(const DrillingCompareConfig&
   estimator::Runner runner = estimator::load_runner({config.plugin});
   runner.configure(config.assignments, std::nullopt);  // validates before any run
   std::vector<DrillingRunResult> runs;
+  const std::size_t total = config.grades.size() * config.rates_hz.size() * config.families.size() *
+                            static_cast<std::size_t>(config.seeds);
+  if (progress) progress(0, total);
   std::uint64_t serial = 0;
   for (const auto& grade : config.grades)
     for (double rate : config.rates_hz)
       for (DepthFamily family : config.families)
-        for (int k = 0; k < config.seeds; ++k, ++serial)
+        for (int k = 0; k < config.seeds; ++k, ++serial) {
           runs.push_back(run_one(config, runner, grade, rate, family, config.base_seed + serial));
+          if (progress) progress(runs.size(), total);
+        }
   return runs;
 }
 

@@ -63,18 +63,18 @@ Eigen::Vector3d parse_vector(const std::string& text, const std::string& option)
 }
 
 // Progress on stderr: a redrawn bar on a terminal, a line every 10% otherwise (logs, CI).
-compare::ProgressCallback progress_printer() {
+compare::ProgressCallback progress_printer(const std::string& unit) {
   const bool tty = isatty(STDERR_FILENO);
   auto last_decile = std::make_shared<int>(-1);
-  return [tty, last_decile](std::size_t done, std::size_t total) {
+  return [tty, last_decile, unit](std::size_t done, std::size_t total) {
     const int percent = total ? static_cast<int>(100 * done / total) : 100;
     if (tty) {
       const int filled = percent / 4;
       std::cerr << "\r[" << std::string(static_cast<std::size_t>(filled), '#') << std::string(static_cast<std::size_t>(25 - filled), ' ')
-                << "] " << percent << "% (" << done << "/" << total << " records)" << (done == total ? "\n" : "") << std::flush;
+                << "] " << percent << "% (" << done << "/" << total << " " << unit << ")" << (done == total ? "\n" : "") << std::flush;
     } else if (percent / 10 != *last_decile) {
       *last_decile = percent / 10;
-      std::cerr << "plumb compare: " << percent << "% (" << done << "/" << total << " records)" << std::endl;
+      std::cerr << "plumb compare: " << percent << "% (" << done << "/" << total << " " << unit << ")" << std::endl;
     }
   };
 }
@@ -150,7 +150,7 @@ int run_drilling(const CompareOptions& o, const CLI::App& cmd, bool estimators_g
   c.seeds = o.seeds;
   c.base_seed = o.seed;
   c.assignments = o.params;
-  const auto runs = compare::run_drilling_compare(c);
+  const auto runs = compare::run_drilling_compare(c, progress_printer("drilling runs"));
   compare::write_drilling_report(std::cout, runs, c);
   if (!o.plots_dir.empty()) {
     std::filesystem::create_directories(o.plots_dir);
@@ -186,7 +186,7 @@ int run(const CompareOptions& o) {
   if (!o.accel_bias.empty()) c.base.accel_errors.bias = parse_vector(o.accel_bias, "--accel-bias");
   if (!o.mag_bias.empty()) c.base.mag_errors.bias = parse_vector(o.mag_bias, "--mag-bias");
   c.assignments = o.params;
-  const auto result = compare::run_compare(c, progress_printer());
+  const auto result = compare::run_compare(c, progress_printer("records"));
   compare::write_report(std::cout, result);
   if (!o.csv_path.empty()) {
     std::ofstream f(o.csv_path);

@@ -3,7 +3,9 @@
 // figures the source reports for its gyro inclinometer (docs/methods.md section 4).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -84,7 +86,9 @@ struct DrillingRunResult {
 
 // Throws plugin::Error / estimator::ParameterError before any run for a bad plugin or parameter,
 // std::invalid_argument for a figure out of range (a negative noise, --noisier not above 0).
-std::vector<DrillingRunResult> run_drilling_compare(const DrillingCompareConfig& config);
+// progress(done, total) after each run (and once before the first).
+std::vector<DrillingRunResult> run_drilling_compare(const DrillingCompareConfig& config,
+                                                    const std::function<void(std::size_t, std::size_t)>& progress = {});
 
 // The table, one row per run, after lines saying what each depth family in it fed the navigator.
 void write_drilling_report(std::ostream& out, const std::vector<DrillingRunResult>& runs,
