@@ -1,5 +1,5 @@
-// The strapdown navigator: the input checks, and the owner that wires its parts (each its own
-// header): the stillness watch, the alignment, the filter state, the stop updates and the output
+// The strapdown navigator: the owner that wires its parts, each in its own header: the input
+// checks, the stillness watch, the alignment, the filter state, the stop updates, and the output
 // rows with the optional backward smoother. Plain C++ (no plugin API): the plugin
 // (strapdown_estimator.cpp) and the tests drive it through push/flush.
 #pragma once
@@ -19,6 +19,7 @@
 #include "plumb/strapdown/aligner.hpp"
 #include "plumb/strapdown/error_state_filter.hpp"
 #include "plumb/strapdown/filter_state.hpp"
+#include "plumb/strapdown/input_checks.hpp"
 #include "plumb/strapdown/mechanization.hpp"
 #include "plumb/strapdown/navigator_common.hpp"
 #include "plumb/strapdown/navigator_config.hpp"
@@ -32,7 +33,8 @@ namespace plumb::strapdown {
 class Navigator {
  public:
   explicit Navigator(const NavigatorConfig& config = {});
-  // Counter pointers point into counters_: a copy would bump the original's; a move keeps the nodes.
+  // The input checks bump counters through pointers into counters_: a copy would bump the
+  // original's; a move keeps the nodes.
   Navigator(const Navigator&) = delete;
   Navigator& operator=(const Navigator&) = delete;
   Navigator(Navigator&&) = default;
@@ -56,15 +58,13 @@ class Navigator {
   double mag_axial_bias() const { return filter_.mag_axial_bias(); }
   const StateMatrix& covariance() const { return filter_.covariance(); }
   bool still() const { return watch_.still(); }
-  double time() const { return last_t_.value_or(0.0); }
+  double time() const { return checks_.last_t().value_or(0.0); }
   std::size_t smoother_epochs() const { return rows_.smoother_epochs(); }
 
  private:
   using Input = InputReading;
   void reset();
   void count(const char* name, std::uint64_t n = 1) { counters_[name] += n; }
-  bool accept(const Sample& s, Input& in);
-  void shift_gyro(Input in, std::vector<Estimate>& out);
   void process(const Input& in, std::vector<Estimate>& out);
   void before_alignment(const Input& in, std::vector<Estimate>& out);
   void align(const Input& in);
@@ -75,21 +75,13 @@ class Navigator {
 
   NavigatorConfig config_;
   Counters counters_;
-  std::uint64_t* samples_counter_ = nullptr;
-  std::uint64_t* accepted_counter_ = nullptr;
-  // Input.
-  std::optional<double> last_t_;
-  std::optional<Eigen::Vector3d> last_good_w_, last_good_f_;
-  std::deque<Input> shift_queue_;
-  std::deque<std::pair<double, Eigen::Vector3d>> gyro_history_;
-  double dt_nominal_ = 0;
-  bool saw_gyro_ = false, saw_no_gyro_ = false, saw_mag_ = false;
   // Navigation.
   bool aligned_ = false;
   std::optional<Input> prev_, prev2_;
   double last_epoch_t_ = 0;
   StillnessState still_state_;
   // The parts.
+  InputChecks checks_;
   StillnessWatch watch_;
   Aligner aligner_;
   FilterState filter_;
