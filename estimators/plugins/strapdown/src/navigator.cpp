@@ -1,8 +1,6 @@
 #include "plumb/strapdown/navigator.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <limits>
+#include <optional>
 
 namespace plumb::strapdown {
 
@@ -139,8 +137,8 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   // The full update of the two-rate mechanization, then the filter at the same instant.
   const FilterState::Prediction prediction = filter_.predict();
   last_epoch_t_ = in.t;
-  stops_.at_epoch(filter_, still_state_, in.t, checks_.dt_nominal(), watch_.depth_sd(), aligner_.use_mag(), aligner_.field(),
-                  counters_);
+  stops_.at_epoch(filter_, still_state_, in.t, checks_.dt_nominal(), watch_.depth_sd(), aligner_.use_mag(),
+                  aligner_.field(), counters_);
   // The minor steps go on from the corrected state.
   filter_.begin_steps();
   watch_.refresh_allowances(filter_);
