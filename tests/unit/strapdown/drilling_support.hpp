@@ -135,7 +135,6 @@ inline RunMetrics score_drilling(const std::vector<Sample>& samples, const std::
       const double sd = e.navigation->position_sd_m[i];
       if (sd > 0) m.end_position_z2 += (p[i] - truth_p[i]) * (p[i] - truth_p[i]) / (sd * sd);
     }
-    if (getenv("DBG_END") && &e == &rows.back()) fprintf(stderr, "end err N %.3f E %.3f D %.3f  sd %.3f %.3f %.3f  I %.2f A %.2f\n", p[0]-tr.north_m, p[1]-tr.east_m, p[2]-tr.down_m, e.navigation->position_sd_m[0], e.navigation->position_sd_m[1], e.navigation->position_sd_m[2], tr.inclination_deg, tr.azimuth_deg);
     m.end_azi_err_deg = da;
     m.end_azi_sd_deg = e.azimuth_sd_deg;
   }

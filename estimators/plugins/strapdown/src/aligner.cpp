@@ -104,6 +104,9 @@ StateMatrix Aligner::initial_covariance(const Eigen::Vector3d& f, double heading
   if (lever_model) p0.block<2, 2>(kLever, kLever).diagonal().setConstant(config_.lever_arm_sd * config_.lever_arm_sd);
   if (drilling_tool) {
     p0(kGyroScale, kGyroScale) = config_.gyro_scale_sd * config_.gyro_scale_sd;
+    p0.block<2, 2>(kGyroLeak, kGyroLeak).diagonal().setConstant(config_.gyro_misalignment_sd * config_.gyro_misalignment_sd);
+    // g_s and g_a are each the mean of two independent elements.
+    p0.block<2, 2>(kGyroG, kGyroG).diagonal().setConstant(0.5 * config_.gyro_g_sensitivity_sd * config_.gyro_g_sensitivity_sd);
     if (use_mag_) p0(kMagAxial, kMagAxial) = config_.mag_axial_bias_sd * config_.mag_axial_bias_sd;
   }
   if (config_.gravity) {

@@ -21,7 +21,8 @@ StateMatrix ErrorStateFilter::dynamics(const StepIntegrals& in, const Eigen::Vec
   f.block<1, 3>(kDistance, kVel) = (in.axis_n / dt).transpose();
   f(kVel + 2, kGravity) = 1.0;
   f.block<3, 2>(kVel, kLever) = -in.c_lever / dt;
-  f.block<3, 1>(kAtt, kGyroScale) = -in.spin_axis / dt;
+  f.block<3, 3>(kAtt, kGyroSpin) = -in.spin_frame / dt;
+  f.block<3, 2>(kAtt, kGyroG) = -in.c_gyro_g / dt;
   return f;
 }
 
@@ -61,11 +62,16 @@ StateMatrix ErrorStateFilter::transition(const StepIntegrals& in, const Eigen::V
   phi.block<3, 2>(kVel, kLever) = avl + 0.5 * avv * avl;
   phi.block<3, 2>(kPos, kLever) = (0.5 * dt) * avl;
   phi.block<1, 2>(kDistance, kLever) = 0.5 * adv * avl;
-  // The scale factor's column enters through the attitude as a gyro bias along the tool axis does.
-  const Eigen::Vector3d aak = -in.spin_axis;
-  phi.block<3, 1>(kAtt, kGyroScale) = aak + 0.5 * aaa * aak;
-  phi.block<3, 1>(kVel, kGyroScale) = 0.5 * ava * aak;
-  phi(kDistance, kGyroScale) = 0.5 * ada.dot(aak);
+  // The spin columns (misalignment and scale factor) enter through the attitude as the gyro bias's
+  // do, weighted by the rate about the tool axis.
+  const Eigen::Matrix3d aak = -in.spin_frame;
+  phi.block<3, 3>(kAtt, kGyroSpin) = aak + 0.5 * aaa * aak;
+  phi.block<3, 3>(kVel, kGyroSpin) = 0.5 * ava * aak;
+  phi.block<1, 3>(kDistance, kGyroSpin) = 0.5 * ada * aak;
+  const Eigen::Matrix<double, 3, 2> aaq = -in.c_gyro_g;
+  phi.block<3, 2>(kAtt, kGyroG) = aaq + 0.5 * aaa * aaq;
+  phi.block<3, 2>(kVel, kGyroG) = 0.5 * ava * aaq;
+  phi.block<1, 2>(kDistance, kGyroG) = 0.5 * ada * aaq;
   return phi;
 }
 
@@ -91,16 +97,17 @@ StateMatrix ErrorStateFilter::sandwich(const StateMatrix& phi, const StateMatrix
   // and lever-arm columns; the bias, gravity and lever-arm rows are the identity's. Products by block: 3 x 3 blocks against 3-row strips, about 60 % of the
   // multiply-adds of full rows of phi.
   constexpr int a = kAtt, v = kVel, p = kPos, g = kGyroBias, b = kAccelBias, d = kDistance, n = kGravity, l = kLever,
-                k = kGyroScale;
+                k = kGyroSpin, q = kGyroG;
   StateMatrix pm = m;
   pm.middleRows<3>(a).noalias() = phi.block<3, 3>(a, a).lazyProduct(m.middleRows<3>(a)) +
                                   phi.block<3, 3>(a, g).lazyProduct(m.middleRows<3>(g)) +
-                                  phi.block<3, 1>(a, k).lazyProduct(m.row(k));
+                                  phi.block<3, 3>(a, k).lazyProduct(m.middleRows<3>(k)) +
+                                  phi.block<3, 2>(a, q).lazyProduct(m.middleRows<2>(q));
   pm.middleRows<3>(v).noalias() =
       phi.block<3, 3>(v, a).lazyProduct(m.middleRows<3>(a)) + phi.block<3, 3>(v, v).lazyProduct(m.middleRows<3>(v)) +
       phi.block<3, 3>(v, g).lazyProduct(m.middleRows<3>(g)) + phi.block<3, 3>(v, b).lazyProduct(m.middleRows<3>(b)) +
       phi.block<3, 1>(v, n).lazyProduct(m.row(n)) + phi.block<3, 2>(v, l).lazyProduct(m.middleRows<2>(l)) +
-      phi.block<3, 1>(v, k).lazyProduct(m.row(k));
+      phi.block<3, 3>(v, k).lazyProduct(m.middleRows<3>(k)) + phi.block<3, 2>(v, q).lazyProduct(m.middleRows<2>(q));
   pm.middleRows<3>(p).noalias() += phi.block<3, 3>(p, a).lazyProduct(m.middleRows<3>(a)) +
                                    phi.block<3, 3>(p, v).lazyProduct(m.middleRows<3>(v)) +
                                    phi.block<3, 3>(p, b).lazyProduct(m.middleRows<3>(b)) +
@@ -110,18 +117,21 @@ StateMatrix ErrorStateFilter::sandwich(const StateMatrix& phi, const StateMatrix
                          phi.block<1, 3>(d, v).lazyProduct(m.middleRows<3>(v)) +
                          phi.block<1, 3>(d, g).lazyProduct(m.middleRows<3>(g)) +
                          phi.block<1, 3>(d, b).lazyProduct(m.middleRows<3>(b)) + phi(d, n) * m.row(n) +
-                         phi.block<1, 2>(d, l).lazyProduct(m.middleRows<2>(l)) + phi(d, k) * m.row(k);
+                         phi.block<1, 2>(d, l).lazyProduct(m.middleRows<2>(l)) + phi.block<1, 3>(d, k).lazyProduct(m.middleRows<3>(k)) +
+                         phi.block<1, 2>(d, q).lazyProduct(m.middleRows<2>(q));
   StateMatrix out = pm;
   out.middleCols<3>(a).noalias() = pm.middleCols<3>(a).lazyProduct(phi.block<3, 3>(a, a).transpose()) +
                                    pm.middleCols<3>(g).lazyProduct(phi.block<3, 3>(a, g).transpose()) +
-                                   pm.col(k).lazyProduct(phi.block<3, 1>(a, k).transpose());
+                                   pm.middleCols<3>(k).lazyProduct(phi.block<3, 3>(a, k).transpose()) +
+                                   pm.middleCols<2>(q).lazyProduct(phi.block<3, 2>(a, q).transpose());
   out.middleCols<3>(v).noalias() = pm.middleCols<3>(a).lazyProduct(phi.block<3, 3>(v, a).transpose()) +
                                    pm.middleCols<3>(v).lazyProduct(phi.block<3, 3>(v, v).transpose()) +
                                    pm.middleCols<3>(g).lazyProduct(phi.block<3, 3>(v, g).transpose()) +
                                    pm.middleCols<3>(b).lazyProduct(phi.block<3, 3>(v, b).transpose()) +
                                    pm.col(n).lazyProduct(phi.block<3, 1>(v, n).transpose()) +
                                    pm.middleCols<2>(l).lazyProduct(phi.block<3, 2>(v, l).transpose()) +
-                                   pm.col(k).lazyProduct(phi.block<3, 1>(v, k).transpose());
+                                   pm.middleCols<3>(k).lazyProduct(phi.block<3, 3>(v, k).transpose()) +
+                                   pm.middleCols<2>(q).lazyProduct(phi.block<3, 2>(v, q).transpose());
   out.middleCols<3>(p).noalias() += pm.middleCols<3>(a).lazyProduct(phi.block<3, 3>(p, a).transpose()) +
                                     pm.middleCols<3>(v).lazyProduct(phi.block<3, 3>(p, v).transpose()) +
                                     pm.middleCols<3>(b).lazyProduct(phi.block<3, 3>(p, b).transpose()) +
@@ -131,7 +141,8 @@ StateMatrix ErrorStateFilter::sandwich(const StateMatrix& phi, const StateMatrix
                           pm.middleCols<3>(v).lazyProduct(phi.block<1, 3>(d, v).transpose()) +
                           pm.middleCols<3>(g).lazyProduct(phi.block<1, 3>(d, g).transpose()) +
                           pm.middleCols<3>(b).lazyProduct(phi.block<1, 3>(d, b).transpose()) + phi(d, n) * pm.col(n) +
-                          pm.middleCols<2>(l).lazyProduct(phi.block<1, 2>(d, l).transpose()) + phi(d, k) * pm.col(k);
+                          pm.middleCols<2>(l).lazyProduct(phi.block<1, 2>(d, l).transpose()) + pm.middleCols<3>(k).lazyProduct(phi.block<1, 3>(d, k).transpose()) +
+                          pm.middleCols<2>(q).lazyProduct(phi.block<1, 2>(d, q).transpose());
   return out;
 }
 
@@ -151,7 +162,7 @@ void ErrorStateFilter::predict(const StateMatrix& phi, double dt, const ProcessN
 }
 
 void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bias, Eigen::Vector3d& accel_bias,
-               Eigen::Vector2d* lever, double* gyro_scale, double* mag_axial) {
+               Eigen::Vector2d* lever, Eigen::Vector3d* gyro_spin, double* mag_axial, Eigen::Vector2d* gyro_g) {
   // C(true) = (I + [phi x])^-1 C(est) = exp(-[phi x]) C(est): a rotation on the navigation side.
   state.q = (quaternion_from_rotation_vector(-dx.segment<3>(kAtt)) * state.q).normalized();
   state.v -= dx.segment<3>(kVel);
@@ -160,8 +171,9 @@ void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bia
   accel_bias -= dx.segment<3>(kAccelBias);
   state.s -= dx[kDistance];
   if (lever != nullptr) *lever -= dx.segment<2>(kLever);
-  if (gyro_scale != nullptr) *gyro_scale -= dx[kGyroScale];
+  if (gyro_spin != nullptr) *gyro_spin -= dx.segment<3>(kGyroSpin);
   if (mag_axial != nullptr) *mag_axial -= dx[kMagAxial];
+  if (gyro_g != nullptr) *gyro_g -= dx.segment<2>(kGyroG);
 }
 
 }  // namespace plumb::strapdown

@@ -16,7 +16,7 @@ void FilterState::reset(const NavigatorConfig& config) {
   bg_.setZero();
   ba_.setZero();
   lever_.setZero();
-  gyro_scale_ = 0;
+  gyro_spin_.setZero();
   mag_axial_ = 0;
   lever_model_ = false;
   kf_ = ErrorStateFilter();
@@ -44,22 +44,31 @@ void FilterState::start(const Eigen::Matrix3d& c_bn, double g, double latitude, 
   bg_.setZero();
   ba_.setZero();
   lever_.setZero();
-  gyro_scale_ = 0;
+  gyro_spin_.setZero();
   mag_axial_ = 0;
 }
 
-ImuReading FilterState::corrected(const InputReading& in, bool samples_are_means, double dt_nominal) const {
+ImuReading FilterState::corrected(const InputReading& in, const InputReading* earlier, bool samples_are_means,
+                                  double dt_nominal) const {
   ImuReading r{in.t, in.f - ba_, in.w - bg_};
-  r.w.z() /= 1.0 + gyro_scale_;
-  if (lever_model_ && r.w.squaredNorm() > kTurningRate2) r.f.noalias() -= centripetal_matrix(r.w) * lever_;
+  r.w.z() /= 1.0 + gyro_spin_.z();
+  r.w.head<2>() -= gyro_spin_.head<2>() * r.w.z();
+  r.w.noalias() -= gyro_g_matrix(in.f) * gyro_g_;
+  if (lever_model_ && r.w.squaredNorm() > kTurningRate2) {
+    r.f.noalias() -= centripetal_matrix(r.w) * lever_;
+    if (earlier != nullptr && in.t > earlier->t) {
+      const double spin_rate_change = (in.w.z() - earlier->w.z()) / ((in.t - earlier->t) * (1.0 + gyro_spin_.z()));
+      r.f.head<2>() -= spin_rate_change * Eigen::Vector2d(-lever_.y(), lever_.x());
+    }
+  }
   if (samples_are_means && dt_nominal > 0) r.f = mean_to_instant(r.f, r.w, dt_nominal);
   return r;
 }
 
-FilterState::Prediction FilterState::predict() {
+FilterState::Prediction FilterState::predict(const ProcessNoise& noise) {
   mech_.finish(x_, &integrals_);
   Prediction p{ErrorStateFilter::transition(integrals_, mech_.earth_rate()), integrals_.dt};
-  kf_.predict(p.phi, p.dt, noise_);
+  kf_.predict(p.phi, p.dt, noise);
   integrals_.clear();
   correction_.setZero();
   return p;
@@ -71,7 +80,7 @@ void FilterState::begin_steps() {
 }
 
 void FilterState::apply(const StateVector& dx) {
-  feed_back(dx, x_, bg_, ba_, &lever_, &gyro_scale_, &mag_axial_);
+  feed_back(dx, x_, bg_, ba_, &lever_, &gyro_spin_, &mag_axial_, &gyro_g_);
   correction_ += dx;
   g_ -= dx[kGravity];
   mech_.set_gravity(g_);

@@ -24,13 +24,16 @@ Measurement<3> zero_velocity(const NavState& x, double sd_mps) {
 }
 
 // C_n^b(est) w = C_n^b w + C_n^b [w x] phi to first order.
-Measurement<3> zero_rate(const NavState& x, const Eigen::Vector3d& gyro_bias, const Eigen::Vector3d& w_ie,
-                         const Eigen::Vector3d& mean_raw_w, double sd_mean) {
+Measurement<3> zero_rate(const NavState& x, const Eigen::Vector3d& gyro_bias, const Eigen::Vector2d& gyro_g,
+                         const Eigen::Vector3d& w_ie, const Eigen::Vector3d& mean_raw_w,
+                         const Eigen::Vector3d& mean_raw_f, double sd_mean) {
   Measurement<3> m;
   const Eigen::Matrix3d c_nb = x.q.toRotationMatrix().transpose();
-  m.r = c_nb * w_ie + gyro_bias - mean_raw_w;
+  const Eigen::Matrix<double, 3, 2> g_of_f = gyro_g_matrix(mean_raw_f);
+  m.r = c_nb * w_ie + gyro_bias + g_of_f * gyro_g - mean_raw_w;
   m.h.block<3, 3>(0, kAtt) = c_nb * skew(w_ie);
   m.h.block<3, 3>(0, kGyroBias).setIdentity();
+  m.h.block<3, 2>(0, kGyroG) = g_of_f;
   set_noise(m, sd_mean);
   return m;
 }

@@ -59,6 +59,7 @@ void Mechanization::begin(const NavState& state) {
   c_int_.setZero();
   axis_cross_v_int_.setZero();
   spin_int_.setZero();
+  gyro_g_int_.setZero();
   lever_int_.setZero();
   last_lever_.setZero();
   stepped_ = false;
@@ -129,7 +130,8 @@ void Mechanization::step(const ImuReading& a, const ImuReading& b, const ImuRead
   // The filter's integrals, by the trapezoid.
   c_int_ += (0.5 * dt) * (c_ + c1);
   axis_cross_v_int_ += 0.5 * dt * (axa + axb);
-  spin_int_ += (0.5 * dt) * (a.w.z() * c_.col(2) + b.w.z() * c1.col(2));
+  spin_int_ += (0.5 * dt) * (a.w.z() * c_ + b.w.z() * c1);
+  gyro_g_int_ += (0.5 * dt) * (c_ * gyro_g_matrix(a.f) + c1 * gyro_g_matrix(b.f));
   if (lever_model_) {
     // C~ L(w) at b is the next step's value at a.
     const auto turning = [](const Eigen::Vector3d& w) { return w.squaredNorm() > kTurningRate2; };
@@ -172,7 +174,8 @@ void Mechanization::finish(NavState& state, StepIntegrals* integrals) {
     integrals->f_n += c0_ * u_;
     integrals->axis_n += c_bn.col(2);
     integrals->axis_cross_v += c0_ * axis_cross_v_int_;
-    integrals->spin_axis += c0_ * spin_int_;
+    integrals->spin_frame += c0_ * spin_int_;
+    integrals->c_gyro_g += c0_ * gyro_g_int_;
     if (lever_model_) integrals->c_lever += c0_ * lever_int_;
   }
 }

@@ -66,10 +66,11 @@ void Navigator::process(const Input& in, std::vector<Estimate>& out) {
     before_alignment(in, out);
     return;
   }
-  const ImuReading a = filter_.corrected(*prev_, config_.samples_are_means, checks_.dt_nominal());
-  const ImuReading b = filter_.corrected(in, config_.samples_are_means, checks_.dt_nominal());
+  const bool means = config_.samples_are_means;
+  const ImuReading a = filter_.corrected(*prev_, prev2_ ? &*prev2_ : nullptr, means, checks_.dt_nominal());
+  const ImuReading b = filter_.corrected(in, &*prev_, means, checks_.dt_nominal());
   if (prev2_) {
-    const ImuReading before = filter_.corrected(*prev2_, config_.samples_are_means, checks_.dt_nominal());
+    const ImuReading before = filter_.corrected(*prev2_, nullptr, means, checks_.dt_nominal());
     filter_.step(a, b, &before);
   } else {
     filter_.step(a, b, nullptr);
@@ -135,7 +136,7 @@ void Navigator::align(const Input& in) {
 
 void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   // The full update of the two-rate mechanization, then the filter at the same instant.
-  const FilterState::Prediction prediction = filter_.predict();
+  const FilterState::Prediction prediction = filter_.predict(stops_.process_noise(filter_.noise(), still_state_));
   last_epoch_t_ = in.t;
   stops_.at_epoch(filter_, still_state_, in.t, checks_.dt_nominal(), watch_.depth_sd(), aligner_.use_mag(),
                   aligner_.field(), counters_);

@@ -23,11 +23,11 @@ constexpr double kMilliG = 9.80665e-3;                   // mg -> m/s^2
 // Grade presets: the simulator's table (sim/drilling.hpp) of typical sensor classes.
 struct Grade {
   const char* name;
-  double gyro_bias_dph, gyro_arw, accel_bias_mg, accel_vrw, gyro_scale_ppm;
+  double gyro_bias_dph, gyro_arw, accel_bias_mg, accel_vrw, gyro_scale_ppm, gyro_misalignment_mrad, gyro_g_dph_g;
 };
-constexpr Grade kGrades[] = {{"navigation", 0.01, 0.002, 0.025, 0.005, 5},
-                             {"tactical", 1.0, 0.05, 0.3, 0.03, 100},
-                             {"mems", 10.0, 0.3, 2.0, 0.06, 1000}};
+constexpr Grade kGrades[] = {{"navigation", 0.01, 0.002, 0.025, 0.005, 5, 0.02, 0.1},
+                             {"tactical", 1.0, 0.05, 0.3, 0.03, 100, 0.1, 1},
+                             {"mems", 10.0, 0.3, 2.0, 0.06, 1000, 1.0, 10}};
 
 std::optional<double> optional_number(const estimator::ParameterReader& reader, const estimator::Parameters& given,
                                       const std::string& name, double min, double max) {
@@ -92,6 +92,8 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"gyro_bias_dph", "", "gyro turn-on bias, 1 sigma per axis (deg/h); empty: from imu_grade"},
       {"accel_bias_mg", "", "accelerometer turn-on bias, 1 sigma per axis (mg); empty: from imu_grade"},
       {"gyro_scale_factor_ppm", "", "gyro scale-factor error, 1 sigma (ppm): rotary drilling turns the tool through 10^4 degrees or more between stops; empty: from imu_grade"},
+      {"gyro_misalignment_mrad", "", "gyro axis misalignment, 1 sigma (mrad): the x and y gyros read this share of a rotary string's rate, which tilts the turning axis the navigator integrates; empty: from imu_grade"},
+      {"gyro_g_sensitivity_dph_g", "", "gyro sensitivity to acceleration, 1 sigma per element (deg/h per g): a rotary string turns gravity through the sensor every revolution, and the part of it the turning does not average out drifts the tool's attitude; empty: from imu_grade"},
       {"gyro_bias_instability_dph", "0", "gyro bias wander reached over bias_time_s (deg/h, random walk)"},
       {"accel_bias_instability_mg", "0", "accelerometer bias wander reached over bias_time_s (mg, random walk)"},
       {"bias_time_s", "3600", "time over which the bias instabilities are reached (s)"},
@@ -173,6 +175,10 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   c.gyro_bias_sd = optional_number(r, given, "gyro_bias_dph", 0, 1e5).value_or(grade->gyro_bias_dph) * kDegPerHour;
   c.accel_bias_sd = optional_number(r, given, "accel_bias_mg", 0, 1e4).value_or(grade->accel_bias_mg) * kMilliG;
   c.gyro_scale_sd = optional_number(r, given, "gyro_scale_factor_ppm", 0, 1e5).value_or(grade->gyro_scale_ppm) * 1e-6;
+  c.gyro_misalignment_sd =
+      optional_number(r, given, "gyro_misalignment_mrad", 0, 1e3).value_or(grade->gyro_misalignment_mrad) * 1e-3;
+  c.gyro_g_sensitivity_sd = optional_number(r, given, "gyro_g_sensitivity_dph_g", 0, 1e6).value_or(grade->gyro_g_dph_g) *
+                            kDegPerHour / 9.80665;
   c.gyro_bias_instability = r.number("gyro_bias_instability_dph", 0, 1e5) * kDegPerHour;
   c.accel_bias_instability = r.number("accel_bias_instability_mg", 0, 1e4) * kMilliG;
   c.bias_time_s = r.number("bias_time_s", 1, 1e7);

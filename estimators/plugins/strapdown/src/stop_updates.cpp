@@ -17,6 +17,12 @@ namespace {
 
 // A rig reports depth about once a second: a held value is at most this old while the tool moves.
 constexpr double kHeldDepthAge = 2.0;
+// Seconds of motion the lateral velocity's measured excess remembers.
+constexpr double kLateralMemoryS = 10;
+// A drilling tool's lateral velocity, 1 sigma, is at most this (m/s): vibration of a few millimetres
+// at tens of hertz. Innovations beyond it are the navigator's own velocity wandering (a turning tool
+// read a few times per revolution: vibration the readings cannot resolve), process noise.
+constexpr double kLateralVelocityCap = 0.05;
 
 }  // namespace
 
@@ -39,6 +45,7 @@ void StopUpdates::reset(const NavigatorConfig& config) {
   tally_stops_ = 0;
   tally_distance_ = 0;
   last_field_warning_.clear();
+  lateral_excess_.setZero();
 }
 
 void StopUpdates::take_depth(double t, double depth, bool prev_had_depth, const FilterState& filter) {
@@ -74,13 +81,14 @@ void StopUpdates::at_alignment(FilterState& filter, const StillStats& stats, dou
                                Counters& counters) {
   // The still period of the alignment is the tally's stop 0, not a connection.
   stop_started_t_ = std::numeric_limits<double>::infinity();
+  lateral_excess_.setConstant(config_.nhc_sd * config_.nhc_sd);
   const Eigen::Vector3d f = stats.mean_f(), w = stats.mean_w();
   const double n = stats.count();
   const double sd_w = std::max({stats.sample_sd_w(), filter.noise().gyro_arw / std::sqrt(dt)});
   filter.update(tilt(filter.state(), filter.accel_bias(), filter.gravity(), f, sd_mean_f));
   count(counters, "tilt_updates");
-  filter.update(zero_rate(filter.state(), filter.gyro_bias(), filter.mechanization().earth_rate(), w,
-                          std::max(sd_w / std::sqrt(n), kMinMeanSdGyro)));
+  filter.update(zero_rate(filter.state(), filter.gyro_bias(), filter.gyro_g(), filter.mechanization().earth_rate(), w,
+                          f, std::max(sd_w / std::sqrt(n), kMinMeanSdGyro)));
   count(counters, "zero_rate_updates");
   if (use_mag) {
     mag_stats_ = stats;
@@ -108,10 +116,7 @@ void StopUpdates::at_epoch(FilterState& filter, const StillnessState& still, dou
       still_updates(filter, true, dt_nominal, use_mag, field, counters);
       late_stop_end(filter);
     }
-    if (config_.lateral_velocity_update) {
-      filter.update(lateral_velocity(filter.state(), config_.nhc_sd));
-      count(counters, "lateral_velocity_updates");
-    }
+    if (config_.lateral_velocity_update) lateral_velocity_update(filter, counters);
   }
   if (still.started) stop_started_t_ = t;
   if (still.still && t - stop_started_t_ >= config_.pipe_connection_s) {
@@ -135,6 +140,31 @@ void StopUpdates::depth_update(FilterState& filter, double t, double dt_nominal,
   filter.update(along_hole_distance(x, *latest_depth_ - depth0_, std::sqrt(depth_sd * depth_sd + stale_m * stale_m)));
   count(counters, "depth_updates");
   last_depth_update_t_ = t;
+}
+
+ProcessNoise StopUpdates::process_noise(const ProcessNoise& base, const StillnessState& still) const {
+  ProcessNoise noise = base;
+  if (!still.still) {
+    // The lateral innovations' excess beyond what a tool's lateral velocity can be: the velocity's
+    // process noise carries it (isotropic, as the accelerometers' white noise).
+    const double beyond = (lateral_excess_.array() - kLateralVelocityCap * kLateralVelocityCap).max(0.0).mean();
+    noise.accel_vrw = std::sqrt(noise.accel_vrw * noise.accel_vrw + beyond * config_.kf_rate_hz);
+  }
+  return noise;
+}
+
+void StopUpdates::lateral_velocity_update(FilterState& filter, Counters& counters) {
+  Measurement<2> m = lateral_velocity(filter.state(), config_.nhc_sd);
+  // Covariance matching over the last kLateralMemoryS of motion: the innovations' mean square
+  // beyond what the covariance explains is the tool's real lateral velocity (up to
+  // kLateralVelocityCap; the rest is the velocity's process noise, process_noise()).
+  const Eigen::Matrix<double, kStates, 2> pht = filter.covariance().lazyProduct(m.h.transpose());
+  const Eigen::Vector2d excess = m.r.array().square() - (m.h.lazyProduct(pht)).diagonal().array();
+  lateral_excess_ += std::min(1.0, 1.0 / (kLateralMemoryS * config_.kf_rate_hz)) * (excess - lateral_excess_);
+  m.noise.diagonal() =
+      lateral_excess_.cwiseMax(config_.nhc_sd * config_.nhc_sd).cwiseMin(kLateralVelocityCap * kLateralVelocityCap);
+  filter.update(m);
+  count(counters, "lateral_velocity_updates");
 }
 
 // A still period's end is seen late when the string speeds up slowly (its acceleration under the
@@ -164,8 +194,8 @@ void StopUpdates::still_updates(FilterState& filter, bool period_end, double dt_
   const double n = zaru_stats_.count();
   if (n >= StillnessConfig::kMinWindowSamples && (period_end || zaru_stats_.duration() >= config_.zaru_interval_s)) {
     const double sd_w = std::max(zaru_stats_.sample_sd_w(), filter.noise().gyro_arw / std::sqrt(dt));
-    filter.update(zero_rate(filter.state(), filter.gyro_bias(), filter.mechanization().earth_rate(),
-                            zaru_stats_.mean_w(), std::max(sd_w / std::sqrt(n), kMinMeanSdGyro)));
+    filter.update(zero_rate(filter.state(), filter.gyro_bias(), filter.gyro_g(), filter.mechanization().earth_rate(),
+                            zaru_stats_.mean_w(), zaru_stats_.mean_f(), std::max(sd_w / std::sqrt(n), kMinMeanSdGyro)));
     count(counters, "zero_rate_updates");
     if (config_.tilt_update) {
       filter.update(tilt(filter.state(), filter.accel_bias(), filter.gravity(), zaru_stats_.mean_f(),

@@ -41,13 +41,21 @@
 
 namespace plumb::strapdown {
 
-inline constexpr int kStates = 21;
+inline constexpr int kStates = 25;
 using StateVector = Eigen::Matrix<double, kStates, 1>;
 using StateMatrix = Eigen::Matrix<double, kStates, kStates>;
 
 namespace index {
 inline constexpr int kAtt = 0, kVel = 3, kPos = 6, kGyroBias = 9, kAccelBias = 12, kDistance = 15, kGravity = 16,
-                     kLever = 17, kGyroScale = 19, kMagAxial = 20;
+                     kLever = 17, kGyroLeak = 19, kGyroScale = 21, kMagAxial = 22, kGyroG = 23;
+// kGyroLeak (x, y) and kGyroScale are, in this order, the gyro triad's response to a rate about the
+// tool axis beyond that rate: what the x and y gyros read of it (their misalignment) and the z gyro's
+// scale-factor error.
+inline constexpr int kGyroSpin = kGyroLeak;
+// kGyroG (2): the part of the x and y gyros' sensitivity to the lateral specific force that a turning
+// tool rectifies: g_s (the same on both) and g_a (the cross terms' antisymmetric part), so that
+// w_x reads g_s f_x - g_a f_y and w_y reads g_a f_x + g_s f_y more. Gravity turning through the
+// sensor at every revolution makes them a steady drift of a rotary string's inclination or azimuth.
 }
 
 // Noise densities in SI units.
@@ -113,6 +121,7 @@ class ErrorStateFilter {
 
 // Applies an error estimate to the whole-value state (and the bias estimates).
 void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bias, Eigen::Vector3d& accel_bias,
-               Eigen::Vector2d* lever = nullptr, double* gyro_scale = nullptr, double* mag_axial = nullptr);
+               Eigen::Vector2d* lever = nullptr, Eigen::Vector3d* gyro_spin = nullptr, double* mag_axial = nullptr,
+               Eigen::Vector2d* gyro_g = nullptr);
 
 }  // namespace plumb::strapdown

@@ -1,6 +1,7 @@
 // The navigator's filter state: the whole-value navigation state and the sensor errors it estimates
-// (gyro and accelerometer biases, the z gyro's scale factor, the accelerometers' offset from the
-// tool axis, the magnetometers' bias along it, gravity), the error-state filter over them with its
+// (gyro and accelerometer biases, the gyros' response to a spin about the tool axis and to the
+// lateral specific force, the accelerometers' offset from the tool axis, the magnetometers' bias
+// along it, gravity), the error-state filter over them with its
 // process noise, and the mechanization that carries the state from one filter epoch to the next.
 // Measurements come in through update(), which feeds the filter's correction back into the state.
 #pragma once
@@ -25,17 +26,20 @@ class FilterState {
   void start(const Eigen::Matrix3d& c_bn, double g, double latitude, bool drilling_tool, bool lever_model);
   void reset_covariance(const StateMatrix& p0) { kf_.reset(p0); }
 
-  // A reading with the filter's estimates taken out: the biases and, turning, the centripetal
-  // acceleration of the accelerometers' offset from the tool axis.
-  ImuReading corrected(const InputReading& in, bool samples_are_means, double dt_nominal) const;
+  // A reading with the filter's estimates taken out: the biases, the gyros' response to the spin and,
+  // turning, the centripetal acceleration of the accelerometers' offset from the tool axis and the
+  // tangential one of a spin that changes (stick-slip), whose rate of change the reading before
+  // (earlier, when there is one) gives.
+  ImuReading corrected(const InputReading& in, const InputReading* earlier, bool samples_are_means,
+                       double dt_nominal) const;
   void step(const ImuReading& a, const ImuReading& b, const ImuReading* before) { mech_.step(a, b, before); }
-  // A filter epoch: the mechanization's full update, then the filter's prediction to it. Returns the
-  // transition, for the smoother.
+  // A filter epoch: the mechanization's full update, then the filter's prediction to it with the
+  // given process noise. Returns the transition, for the smoother.
   struct Prediction {
     StateMatrix phi;
     double dt = 0;
   };
-  Prediction predict();
+  Prediction predict(const ProcessNoise& noise);
   // The minor steps go on from the (corrected) state.
   void begin_steps();
   template <int M>
@@ -47,7 +51,8 @@ class FilterState {
   const NavState& state() const { return x_; }
   const Eigen::Vector3d& gyro_bias() const { return bg_; }
   const Eigen::Vector3d& accel_bias() const { return ba_; }
-  double gyro_scale() const { return gyro_scale_; }
+  const Eigen::Vector3d& gyro_spin() const { return gyro_spin_; }
+  const Eigen::Vector2d& gyro_g() const { return gyro_g_; }
   double mag_axial_bias() const { return mag_axial_; }
   double gravity() const { return g_; }
   const StateMatrix& covariance() const { return kf_.covariance(); }
@@ -65,7 +70,10 @@ class FilterState {
   NavState x_;
   Eigen::Vector3d bg_ = Eigen::Vector3d::Zero(), ba_ = Eigen::Vector3d::Zero();
   Eigen::Vector2d lever_ = Eigen::Vector2d::Zero();  // accelerometers' offset from the tool axis (x, y), m
-  double gyro_scale_ = 0;  // the z gyro's scale-factor error: it reads (1 + gyro_scale_) times the rate
+  // The gyros' response to a rate w about the tool axis beyond it: the x and y gyros read
+  // gyro_spin_.x() w and gyro_spin_.y() w (misalignment), the z gyro (1 + gyro_spin_.z()) w.
+  Eigen::Vector3d gyro_spin_ = Eigen::Vector3d::Zero();
+  Eigen::Vector2d gyro_g_ = Eigen::Vector2d::Zero();  // (g_s, g_a): see index::kGyroG
   double mag_axial_ = 0;   // the magnetometers' bias along the tool axis, uT
   // Given, or |mean f| at alignment; corrected by the filter's gravity state from then on.
   double g_ = 9.80665;

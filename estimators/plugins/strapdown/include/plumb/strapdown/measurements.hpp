@@ -21,9 +21,11 @@ struct Measurement {
 Measurement<3> zero_velocity(const NavState& x, double sd_mps);
 
 // Still: the gyros' mean over a stretch of stillness sees only the earth rate plus their bias:
-// z = mean raw w = C_n^b w_ie + b_g. sd_mean: standard deviation of that mean per axis.
-Measurement<3> zero_rate(const NavState& x, const Eigen::Vector3d& gyro_bias, const Eigen::Vector3d& w_ie,
-                         const Eigen::Vector3d& mean_raw_w, double sd_mean);
+// z = mean raw w = C_n^b w_ie + b_g + G(mean raw f) (g_s, g_a). sd_mean: standard deviation of that
+// mean per axis.
+Measurement<3> zero_rate(const NavState& x, const Eigen::Vector3d& gyro_bias, const Eigen::Vector2d& gyro_g,
+                         const Eigen::Vector3d& w_ie, const Eigen::Vector3d& mean_raw_w,
+                         const Eigen::Vector3d& mean_raw_f, double sd_mean);
 
 // Still: the accelerometers' mean sees only gravity plus their bias: z = mean raw f = -C_n^b g_n + b_a.
 // (Tilt and the horizontal accelerometer biases are one measurement: the filter keeps them correlated.)

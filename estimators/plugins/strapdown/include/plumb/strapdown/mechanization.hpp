@@ -61,7 +61,8 @@ struct StepIntegrals {
   Eigen::Vector3d axis_n = Eigen::Vector3d::Zero(); // integral of the tool axis C_b^n e_z
   Eigen::Vector3d axis_cross_v = Eigen::Vector3d::Zero();  // integral of axis x v
   Eigen::Matrix<double, 3, 2> c_lever = Eigen::Matrix<double, 3, 2>::Zero();  // integral of C_b^n L(w)
-  Eigen::Vector3d spin_axis = Eigen::Vector3d::Zero();  // integral of the tool axis times the rate about it
+  Eigen::Matrix3d spin_frame = Eigen::Matrix3d::Zero();  // integral of C_b^n times the rate about the tool axis
+  Eigen::Matrix<double, 3, 2> c_gyro_g = Eigen::Matrix<double, 3, 2>::Zero();  // integral of C_b^n G(f) (gyro_g_matrix)
   void clear() { *this = StepIntegrals(); }
 };
 
@@ -71,6 +72,13 @@ inline constexpr double kTurningRate2 = 1e-4;
 
 // The centripetal acceleration of a point r = (r_x, r_y, 0) off the tool axis, w x (w x r) =
 // L(w) r: L's columns are w x (w x e_x) and w x (w x e_y).
+// The gyro rate error of the rectifying g-sensitivity (g_s, g_a) is G(f) (g_s, g_a).
+inline Eigen::Matrix<double, 3, 2> gyro_g_matrix(const Eigen::Vector3d& f) {
+  Eigen::Matrix<double, 3, 2> m;
+  m << f.x(), -f.y(), f.y(), f.x(), 0.0, 0.0;
+  return m;
+}
+
 inline Eigen::Matrix<double, 3, 2> centripetal_matrix(const Eigen::Vector3d& w) {
   const double w2 = w.squaredNorm();
   Eigen::Matrix<double, 3, 2> l;
@@ -136,7 +144,9 @@ class Mechanization {
   Eigen::Vector3d u_ = Eigen::Vector3d::Zero(), u_sum_ = Eigen::Vector3d::Zero();
   double s_sum_ = 0;
   Eigen::Matrix3d c_int_ = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d axis_cross_v_int_ = Eigen::Vector3d::Zero(), spin_int_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d axis_cross_v_int_ = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d spin_int_ = Eigen::Matrix3d::Zero();
+  Eigen::Matrix<double, 3, 2> gyro_g_int_ = Eigen::Matrix<double, 3, 2>::Zero();
   Eigen::Matrix<double, 3, 2> lever_int_ = Eigen::Matrix<double, 3, 2>::Zero(), last_lever_ = Eigen::Matrix<double, 3, 2>::Zero();
   bool lever_model_ = false;
   // Of the last reading (valid after the first step since begin()): C~ f, and axis x velocity in b0.

@@ -54,7 +54,9 @@ class Navigator {
   const NavState& state() const { return filter_.state(); }
   const Eigen::Vector3d& gyro_bias() const { return filter_.gyro_bias(); }
   const Eigen::Vector3d& accel_bias() const { return filter_.accel_bias(); }
-  double gyro_scale() const { return filter_.gyro_scale(); }
+  double gyro_scale() const { return filter_.gyro_spin().z(); }
+  Eigen::Vector2d gyro_leak() const { return filter_.gyro_spin().head<2>(); }
+  Eigen::Vector2d gyro_g() const { return filter_.gyro_g(); }
   double mag_axial_bias() const { return filter_.mag_axial_bias(); }
   const StateMatrix& covariance() const { return filter_.covariance(); }
   bool still() const { return watch_.still(); }

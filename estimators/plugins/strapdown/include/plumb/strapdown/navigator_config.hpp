@@ -46,6 +46,8 @@ struct NavigatorConfig {
   double gyro_bias_sd = 1.0 * 3.14159265358979323846 / 180.0 / 3600.0;  // rad/s, turn-on
   double accel_bias_sd = 0.3e-3 * 9.80665;                          // m/s^2
   double gyro_scale_sd = 100e-6;        // scale-factor error about the tool axis, 1 sigma (fraction)
+  double gyro_misalignment_sd = 0.1e-3; // x and y gyros' share of a rate about the tool axis, 1 sigma (rad)
+  double gyro_g_sensitivity_sd = 1.0 * 3.14159265358979323846 / 180.0 / 3600.0 / 9.80665;  // per element, 1 sigma (rad/s per m/s^2)
   double gyro_bias_instability = 0.0;  // rad/s reached over bias_time_s (random walk)
   double accel_bias_instability = 0.0;
   double bias_time_s = 3600;

@@ -1,8 +1,9 @@
 // The navigator's measurement updates at its filter epochs: at a stop the zero velocity, the
 // gyros' zero rate (and tilt), the magnetic heading (gated by the field the alignment learnt),
 // and a pipe tally's distance at a connection; at a stop's end, what a late-seen end may have
-// hidden; while moving, the lateral velocity of a tool that moves along its axis; and the measured
-// depth, whenever a report is due.
+// hidden; while moving, the lateral velocity of a tool that moves along its axis (its noise matched
+// to the innovations, the excess carried as process noise); and the measured depth, whenever a
+// report is due.
 #pragma once
 
 #include <cstddef>
@@ -40,6 +41,10 @@ class StopUpdates {
   void at_epoch(FilterState& filter, const StillnessState& still, double t, double dt_nominal, double depth_sd,
                 bool use_mag, const FieldReference& field, Counters& counters);
 
+  // The process noise of the next filter epoch: the figures' and, while moving, the lateral
+  // velocity's measured excess beyond what a tool's lateral velocity can be.
+  ProcessNoise process_noise(const ProcessNoise& noise, const StillnessState& still) const;
+
   std::uint32_t stops() const { return zupt_periods_; }
   // Why the last stop gave no azimuth update; empty when it did.
   const std::string& field_warning() const { return last_field_warning_; }
@@ -51,6 +56,7 @@ class StopUpdates {
   void tally_update(FilterState& filter, Counters& counters);
   void late_stop_end(FilterState& filter) const;
   void depth_update(FilterState& filter, double t, double dt_nominal, double depth_sd, Counters& counters);
+  void lateral_velocity_update(FilterState& filter, Counters& counters);
 
   NavigatorConfig config_;
   StillStats zaru_stats_, mag_stats_;
@@ -66,6 +72,10 @@ class StopUpdates {
   std::size_t tally_stops_ = 0;
   double tally_distance_ = 0;
   double stop_started_t_ = 0;
+  // Mean square of the lateral-velocity innovations beyond what the filter's covariance explains
+  // (m^2/s^2, x and y): the tool's real lateral velocity (vibration, whirl, what the lever arm's
+  // model leaves), used where it is larger than nhc_sd^2.
+  Eigen::Vector2d lateral_excess_ = Eigen::Vector2d::Zero();
   std::string last_field_warning_;
 };
 
