@@ -75,6 +75,9 @@ StillnessInput StillnessWatch::raw_input(const InputReading& in, std::optional<d
   si.w_minus_expected = in.w;
   si.extra_gyro_tol = kEarthRate + 3.0 * config_.gyro_bias_sd;
   si.g = config_.gravity.value_or(in.f.norm());
+  // A given gravity against readings whose bias is not known yet: 3 sigma of the stated bias
+  // along the specific force (the filter takes it out once aligned).
+  if (config_.gravity) si.extra_accel_tol = 3.0 * config_.accel_bias_sd;
   field_deviation(in, b0, si);
   return si;
 }

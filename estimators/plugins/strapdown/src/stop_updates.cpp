@@ -44,6 +44,7 @@ void StopUpdates::reset(const NavigatorConfig& config) {
   zupt_periods_ = 0;
   tally_stops_ = 0;
   tally_distance_ = 0;
+  stop_settled_ = false;
   last_field_warning_.clear();
   lateral_excess_.setZero();
 }
@@ -108,13 +109,22 @@ void StopUpdates::at_alignment(FilterState& filter, const StillStats& stats, dou
 void StopUpdates::at_epoch(FilterState& filter, const StillnessState& still, double t, double dt_nominal,
                            double depth_sd, bool use_mag, const FieldReference& field, Counters& counters) {
   if (still.still) {
-    filter.update(zero_velocity(filter.state(), config_.zupt_sd));
+    // A drilling string that slows over seconds looks still to the inertial sensors before it is
+    // (depth, when there is some, sees the creep): in the first seconds of such a stop the tool may
+    // creep at the rate of penetration, and a stop that ends within them was none (no stop updates
+    // at its end).
+    const bool settling = filter.drilling_tool() && !latest_depth_ &&
+                          t - still.period_start < config_.min_still_s + config_.stop_settle_s;
+    stop_settled_ = !settling;
+    filter.update(
+        zero_velocity(filter.state(), settling ? std::max(config_.zupt_sd, config_.rop_sd) : config_.zupt_sd));
     count(counters, "zero_velocity_updates");
-    still_updates(filter, false, dt_nominal, use_mag, field, counters);
+    if (!settling) still_updates(filter, false, dt_nominal, use_mag, field, counters);
   } else {
     if (still.ended) {
-      still_updates(filter, true, dt_nominal, use_mag, field, counters);
+      if (stop_settled_) still_updates(filter, true, dt_nominal, use_mag, field, counters);
       late_stop_end(filter);
+      stop_settled_ = false;
     }
     if (config_.lateral_velocity_update) lateral_velocity_update(filter, counters);
   }

@@ -60,6 +60,7 @@ struct NavigatorConfig {
   // a foot, a hand-carried or a vehicle-mounted sensor does not.
   bool lateral_velocity_update = true;
   double nhc_sd = 0.01;                // m/s
+  double stop_settle_s = 2;            // a drilling tool may creep this long into a confirmed stop (s)
   double rop_sd = 0.02;                // rate of penetration, 1 sigma (m/s): the speed a stop's end may be seen late at
   double depth_sd = 0.01;              // m
   double depth_interval_s = 1;

@@ -72,6 +72,7 @@ class StopUpdates {
   std::size_t tally_stops_ = 0;
   double tally_distance_ = 0;
   double stop_started_t_ = 0;
+  bool stop_settled_ = false;  // the still period in progress has outlasted stop_settle_s
   // Mean square of the lateral-velocity innovations beyond what the filter's covariance explains
   // (m^2/s^2, x and y): the tool's real lateral velocity (vibration, whirl, what the lever arm's
   // model leaves), used where it is larger than nhc_sd^2.
