@@ -330,6 +330,45 @@ TEST(StrapdownInputs, GyroGSensitivityOfARotaryStringIsModelled) {
   EXPECT_GT(without.rms_z(), 2.0 * with_states.rms_z());  // what the states are for
 }
 
+// Accelerometers with scale factors and misalignments (here 2000 ppm between x and y and 1 mrad of
+// non-orthogonality): gravity falling on the triad reads as a bias that depends on the toolface, so
+// after a short rotary run the stop has a new one. The bias the last stop found is then that much
+// less known, and the sigmas say so; kept as it was, they are many times too small.
+TEST(StrapdownInputs, AccelerometerTriadErrorsAfterTheToolTurned) {
+  auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 100, 8);
+  // Short rotary runs between stops: each leaves the toolface somewhere else.
+  scenario.plan.segments.clear();
+  for (int i = 0; i < 6; ++i) {
+    scenario.plan.segments.push_back(sim::DrillSegment::rotary(0.3, 0.05, 6.0 + 3.7 * i));
+    scenario.plan.segments.push_back(sim::DrillSegment::stop(60));
+  }
+  sim::DrillingSimulator simulator(scenario);
+  std::vector<TruthSample> truth;
+  std::vector<Sample> samples = simulator.run(&truth);
+  Eigen::Matrix3d k = Eigen::Matrix3d::Identity();
+  k(0, 0) += 1000e-6;
+  k(1, 1) -= 1000e-6;
+  k(0, 1) = k(1, 0) = 1.0e-3;
+  for (Sample& s : samples) s.f = k * s.f;
+  RunMetrics with_model, without;
+  for (bool model : {true, false}) {
+    estimator::Parameters p = parameters_for(scenario);
+    p["accel_scale_factor_ppm"] = model ? "1500" : "0";
+    p["accel_misalignment_mrad"] = model ? "1.5" : "0";
+    RunMetrics& m = model ? with_model : without;
+    m = score_drilling(samples, truth, 100, 0, p, nullptr);
+    std::printf("accelerometer triad 2000 ppm, 1 mrad, modelled %s: max error I %.3f A %.3f T %.3f deg, RMS(error/sigma) "
+                "%.2f (I %.2f A %.2f T %.2f)\n",
+                model ? "yes" : "no ", m.max_inc_err_deg, m.max_azi_err_deg, m.max_tf_err_deg, m.rms_z(),
+                std::sqrt(m.sum_z2_angle[0] / m.n_z_angle[0]), std::sqrt(m.sum_z2_angle[1] / m.n_z_angle[1]),
+                std::sqrt(m.sum_z2_angle[2] / m.n_z_angle[2]));
+  }
+  // Not all of it: the toolface's RMS(error/sigma) is still about 5 with the model (30 without);
+  // the triad's error while the tool turns is not modelled yet.
+  EXPECT_LT(with_model.rms_z(), 3.5);
+  EXPECT_GT(without.rms_z(), 3.0 * with_model.rms_z());  // what the model is for
+}
+
 // A magnetized drill string: a bias along the tool axis, the same at every stop, turns the magnetic
 // azimuth of a near-horizontal tool by m sin(I) sin(A) / Bh (0.3 uT: a third of a degree here).
 // With the axial-bias state the azimuth sigma carries it; treated as noise per stop, it would be

@@ -23,11 +23,11 @@ constexpr double kMilliG = 9.80665e-3;                   // mg -> m/s^2
 // Grade presets: the simulator's table (sim/drilling.hpp) of typical sensor classes.
 struct Grade {
   const char* name;
-  double gyro_bias_dph, gyro_arw, accel_bias_mg, accel_vrw, gyro_scale_ppm, gyro_misalignment_mrad, gyro_g_dph_g;
+  double gyro_bias_dph, gyro_arw, accel_bias_mg, accel_vrw, gyro_scale_ppm, gyro_misalignment_mrad, gyro_g_dph_g, accel_scale_ppm, accel_misalignment_mrad;
 };
-constexpr Grade kGrades[] = {{"navigation", 0.01, 0.002, 0.025, 0.005, 5, 0.02, 0.1},
-                             {"tactical", 1.0, 0.05, 0.3, 0.03, 100, 0.1, 1},
-                             {"mems", 10.0, 0.3, 2.0, 0.06, 1000, 1.0, 10}};
+constexpr Grade kGrades[] = {{"navigation", 0.01, 0.002, 0.025, 0.005, 5, 0.02, 0.1, 20, 0.02},
+                             {"tactical", 1.0, 0.05, 0.3, 0.03, 100, 0.1, 1, 100, 0.1},
+                             {"mems", 10.0, 0.3, 2.0, 0.06, 1000, 1.0, 10, 500, 0.5}};
 
 std::optional<double> optional_number(const estimator::ParameterReader& reader, const estimator::Parameters& given,
                                       const std::string& name, double min, double max) {
@@ -93,6 +93,8 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"accel_bias_mg", "", "accelerometer turn-on bias, 1 sigma per axis (mg); empty: from imu_grade"},
       {"gyro_scale_factor_ppm", "", "gyro scale-factor error, 1 sigma (ppm): rotary drilling turns the tool through 10^4 degrees or more between stops; empty: from imu_grade"},
       {"gyro_misalignment_mrad", "", "gyro axis misalignment, 1 sigma (mrad): the x and y gyros read this share of a rotary string's rate, which tilts the turning axis the navigator integrates; empty: from imu_grade"},
+      {"accel_scale_factor_ppm", "", "accelerometer scale-factor error, 1 sigma per axis (ppm): with the misalignment below, a bias that depends on how gravity falls on the triad, so a tool that turned between two stops has a new one; empty: from imu_grade"},
+      {"accel_misalignment_mrad", "", "accelerometer axis misalignment, 1 sigma (mrad); empty: from imu_grade"},
       {"gyro_g_sensitivity_dph_g", "", "gyro sensitivity to acceleration, 1 sigma per element (deg/h per g): a rotary string turns gravity through the sensor every revolution, and the part of it the turning does not average out drifts the tool's attitude; empty: from imu_grade"},
       {"gyro_bias_instability_dph", "0", "gyro bias wander reached over bias_time_s (deg/h, random walk)"},
       {"accel_bias_instability_mg", "0", "accelerometer bias wander reached over bias_time_s (mg, random walk)"},
@@ -178,6 +180,10 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   c.gyro_scale_sd = optional_number(r, given, "gyro_scale_factor_ppm", 0, 1e5).value_or(grade->gyro_scale_ppm) * 1e-6;
   c.gyro_misalignment_sd =
       optional_number(r, given, "gyro_misalignment_mrad", 0, 1e3).value_or(grade->gyro_misalignment_mrad) * 1e-3;
+  c.accel_scale_sd =
+      optional_number(r, given, "accel_scale_factor_ppm", 0, 1e5).value_or(grade->accel_scale_ppm) * 1e-6;
+  c.accel_misalignment_sd =
+      optional_number(r, given, "accel_misalignment_mrad", 0, 1e3).value_or(grade->accel_misalignment_mrad) * 1e-3;
   c.gyro_g_sensitivity_sd = optional_number(r, given, "gyro_g_sensitivity_dph_g", 0, 1e6).value_or(grade->gyro_g_dph_g) *
                             kDegPerHour / 9.80665;
   c.gyro_bias_instability = r.number("gyro_bias_instability_dph", 0, 1e5) * kDegPerHour;

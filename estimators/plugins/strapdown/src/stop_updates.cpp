@@ -125,11 +125,15 @@ void StopUpdates::at_epoch(FilterState& filter, const StillnessState& still, dou
     if (still.ended) {
       if (stop_settled_) still_updates(filter, true, dt_nominal, use_mag, field, counters);
       late_stop_end(filter, depth_tolerance_m);
+      last_stop_attitude_ = filter.state().q;
       stop_settled_ = false;
     }
     if (config_.lateral_velocity_update) lateral_velocity_update(filter, counters);
   }
-  if (still.started) stop_started_t_ = t;
+  if (still.started) {
+    stop_started_t_ = t;
+    turned_since_last_stop(filter);
+  }
   if (still.still && t - stop_started_t_ >= config_.pipe_connection_s) {
     tally_update(filter, counters);
     stop_started_t_ = std::numeric_limits<double>::infinity();  // once per stop
@@ -203,6 +207,21 @@ void StopUpdates::late_stop_end(FilterState& filter, double depth_tolerance_m) c
   p.block<3, 1>(kPos, kDistance) += add.block<3, 1>(0, 3);
   p.block<1, 3>(kDistance, kPos) += add.block<1, 3>(3, 0);
   p(kDistance, kDistance) += add(3, 3);
+}
+
+// The accelerometers' scale factors and misalignments read gravity as a bias that depends on how it
+// falls on the triad: (K - I) C_n^b g, which goes round twice per turn of the toolface. A stop after
+// the tool turned by an angle a sees that part changed by about 2 a g sigma_K, and by the difference
+// of two independent draws (variance 2 (g sigma_K)^2) after a quarter turn or more: the bias the last
+// stop found is that much less known.
+void StopUpdates::turned_since_last_stop(FilterState& filter) const {
+  if (!last_stop_attitude_ || !filter.drilling_tool()) return;
+  const double sd_k = std::hypot(config_.accel_scale_sd, config_.accel_misalignment_sd);
+  if (!(sd_k > 0)) return;
+  const Eigen::AngleAxisd turn(filter.state().q * last_stop_attitude_->conjugate());
+  const double share = std::min(2.0, 4.0 * turn.angle() * turn.angle());
+  const double g = 9.80665;
+  filter.covariance().block<3, 3>(kAccelBias, kAccelBias).diagonal().array() += share * (g * sd_k) * (g * sd_k);
 }
 
 void StopUpdates::tally_update(FilterState& filter, Counters& counters) {

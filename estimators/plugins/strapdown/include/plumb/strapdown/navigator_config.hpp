@@ -47,6 +47,9 @@ struct NavigatorConfig {
   double accel_bias_sd = 0.3e-3 * 9.80665;                          // m/s^2
   double gyro_scale_sd = 100e-6;        // scale-factor error about the tool axis, 1 sigma (fraction)
   double gyro_misalignment_sd = 0.1e-3; // x and y gyros' share of a rate about the tool axis, 1 sigma (rad)
+  // The accelerometer triad's scale factors and misalignments, 1 sigma (fraction, rad): a bias that
+  // depends on the orientation, new after the tool turns.
+  double accel_scale_sd = 100e-6, accel_misalignment_sd = 0.1e-3;
   double gyro_g_sensitivity_sd = 1.0 * 3.14159265358979323846 / 180.0 / 3600.0 / 9.80665;  // per element, 1 sigma (rad/s per m/s^2)
   double gyro_bias_instability = 0.0;  // rad/s reached over bias_time_s (random walk)
   double accel_bias_instability = 0.0;

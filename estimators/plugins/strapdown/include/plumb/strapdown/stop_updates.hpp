@@ -55,6 +55,7 @@ class StopUpdates {
   void magnetic_update(FilterState& filter, const FieldReference& field, Counters& counters);
   void tally_update(FilterState& filter, Counters& counters);
   void late_stop_end(FilterState& filter, double depth_tolerance_m) const;
+  void turned_since_last_stop(FilterState& filter) const;
   void depth_update(FilterState& filter, double t, double dt_nominal, double depth_sd, Counters& counters);
   void lateral_velocity_update(FilterState& filter, Counters& counters);
 
@@ -66,6 +67,7 @@ class StopUpdates {
   bool have_depth0_ = false;
   double last_depth_update_t_ = -1e300;
   std::optional<double> latest_depth_;
+  std::optional<Eigen::Quaterniond> last_stop_attitude_;  // at the end of the last stop
   double latest_depth_t_ = 0;    // when the latest depth report came (its value first seen)
   double last_depth_row_t_ = 0;  // the last row that carried a depth
   // Pipe tally (tally_update): the stops counted as connections and the tally's distance at the last.
