@@ -34,6 +34,8 @@
 // Measurements are residuals r = h(estimate) - z = H dx + noise.
 #pragma once
 
+#include <array>
+
 #include <Eigen/Core>
 #include <Eigen/LU>
 
@@ -93,22 +95,36 @@ class ErrorStateFilter {
   template <int M>
   StateVector update(const Eigen::Matrix<double, M, 1>& r, const Eigen::Matrix<double, M, kStates>& h,
                      const Eigen::Matrix<double, M, M>& noise, double* nis = nullptr) {
-    // Every product here is lazy (coefficient by coefficient): with a 16-long side they are too
-    // small for the blocked matrix product Eigen would otherwise pick.
-    const Eigen::Matrix<double, kStates, M> pht = p_.lazyProduct(h.transpose());
-    const Eigen::Matrix<double, M, M> s = h.lazyProduct(pht) + noise;
+    // H touches a few states (zero velocity: the velocity's three; lateral velocity: attitude and
+    // velocity): P H' and H P H' are sums over H's non-zero columns only, in the same order as the
+    // full products (the terms left out are exact zeros). Kept transposed (M x 25) so that each
+    // state's M values lie together.
+    std::array<int, kStates> touched{};
+    int n_touched = 0;
+    for (int j = 0; j < kStates; ++j)
+      if (!h.col(j).isZero(0.0)) touched[n_touched++] = j;
+    Eigen::Matrix<double, M, kStates> hp = Eigen::Matrix<double, M, kStates>::Zero();  // H P = (P H')'
+    for (int t = 0; t < n_touched; ++t) hp.noalias() += h.col(touched[t]) * p_.row(touched[t]);
+    Eigen::Matrix<double, M, M> s = noise;
+    for (int t = 0; t < n_touched; ++t) s.noalias() += hp.col(touched[t]) * h.col(touched[t]).transpose();
     // M <= 3: the closed-form inverse of a small symmetric positive definite matrix.
     const Eigen::Matrix<double, M, M> s_inv = s.inverse();
-    const Eigen::Matrix<double, kStates, M> k = pht.lazyProduct(s_inv);
+    const Eigen::Matrix<double, M, kStates> kt = s_inv * hp;  // K'
+    const Eigen::Matrix<double, M, kStates> skt = s * kt;     // S K'
     if (nis != nullptr) *nis = r.dot(s_inv * r);
     // Joseph form (I-KH) P (I-KH)' + K R K', multiplied out: P - K(HP) - (K(HP))' + K S K'. The
-    // same matrix for any gain K, at 16 x 16 x M products instead of 16 x 16 x 16 ones. P stays
-    // exactly symmetric in the same pass: K(HP) + (K(HP))' is, and K S K' is taken as the mean with
-    // its transpose (what symmetrize() did afterwards).
-    const StateMatrix khp = k.lazyProduct(pht.transpose());
-    const StateMatrix ksk = k.lazyProduct(s).lazyProduct(k.transpose());
-    p_ += 0.5 * (ksk + ksk.transpose()) - (khp + khp.transpose());
-    return k * r;
+    // same matrix for any gain K, at 25 x 25 x M products instead of 25 x 25 x 25 ones. Each of its
+    // terms is symmetric (K S K' taken as the mean with its transpose), so only one triangle is
+    // computed and P stays exactly symmetric.
+    for (int j = 0; j < kStates; ++j) {
+      for (int i = 0; i <= j; ++i) {
+        const double ksk = 0.5 * (kt.col(i).dot(skt.col(j)) + kt.col(j).dot(skt.col(i)));
+        const double khp = kt.col(i).dot(hp.col(j)) + kt.col(j).dot(hp.col(i));
+        p_(i, j) += ksk - khp;
+        p_(j, i) = p_(i, j);
+      }
+    }
+    return kt.transpose() * r;
   }
 
   // After feeding dx back into the whole-value state the error state is zero again; its
