@@ -160,107 +160,42 @@ StateMatrix ErrorStateFilter::predicted_covariance(const StateMatrix& phi, const
 
 namespace {
 
-// The states whose rows of phi are not the identity's (attitude, velocity, position, distance), in
-// the order of the rows of moved_rows() below.
+// The states whose rows of phi are not the identity's: attitude, velocity, position, distance.
 constexpr int kMoved = 10;
 constexpr std::array<int, kMoved> kMovedStates = {0, 1, 2, 3, 4, 5, 6, 7, 8, kDistance};
-using MovedRows = Eigen::Matrix<double, kMoved, kStates>;
-
-// The lever arm's columns of phi are exactly zero while the tool does not turn (the mechanization
-// gathers no centripetal term then): their products can be left out.
-bool lever_columns_zero(const StateMatrix& phi) {
-  return phi.block<9, 2>(0, kLever).isZero(0.0) && phi.block<1, 2>(kDistance, kLever).isZero(0.0);
-}
-
-// (phi m)'s rows of the moved states, over phi's non-zero blocks (as sandwich()'s first pass).
-MovedRows moved_rows(const StateMatrix& phi, const StateMatrix& m, bool lever) {
-  constexpr int a = kAtt, v = kVel, p = kPos, g = kGyroBias, b = kAccelBias, d = kDistance, n = kGravity, l = kLever,
-                k = kGyroSpin, q = kGyroG;
-  MovedRows pm;
-  pm.middleRows<3>(0).noalias() = phi.block<3, 3>(a, a).lazyProduct(m.middleRows<3>(a)) +
-                                  phi.block<3, 3>(a, g).lazyProduct(m.middleRows<3>(g)) +
-                                  phi.block<3, 3>(a, k).lazyProduct(m.middleRows<3>(k)) +
-                                  phi.block<3, 2>(a, q).lazyProduct(m.middleRows<2>(q));
-  pm.middleRows<3>(3).noalias() =
-      phi.block<3, 3>(v, a).lazyProduct(m.middleRows<3>(a)) + phi.block<3, 3>(v, v).lazyProduct(m.middleRows<3>(v)) +
-      phi.block<3, 3>(v, g).lazyProduct(m.middleRows<3>(g)) + phi.block<3, 3>(v, b).lazyProduct(m.middleRows<3>(b)) +
-      phi.block<3, 1>(v, n).lazyProduct(m.row(n)) + phi.block<3, 3>(v, k).lazyProduct(m.middleRows<3>(k)) +
-      phi.block<3, 2>(v, q).lazyProduct(m.middleRows<2>(q));
-  pm.middleRows<3>(6).noalias() = m.middleRows<3>(p) + phi.block<3, 3>(p, a).lazyProduct(m.middleRows<3>(a)) +
-                                  phi.block<3, 3>(p, v).lazyProduct(m.middleRows<3>(v)) +
-                                  phi.block<3, 3>(p, b).lazyProduct(m.middleRows<3>(b)) +
-                                  phi.block<3, 1>(p, n).lazyProduct(m.row(n));
-  pm.row(9).noalias() = m.row(d) + phi.block<1, 3>(d, a).lazyProduct(m.middleRows<3>(a)) +
-                        phi.block<1, 3>(d, v).lazyProduct(m.middleRows<3>(v)) +
-                        phi.block<1, 3>(d, g).lazyProduct(m.middleRows<3>(g)) +
-                        phi.block<1, 3>(d, b).lazyProduct(m.middleRows<3>(b)) + phi(d, n) * m.row(n) +
-                        phi.block<1, 3>(d, k).lazyProduct(m.middleRows<3>(k)) +
-                        phi.block<1, 2>(d, q).lazyProduct(m.middleRows<2>(q));
-  if (lever) {
-    pm.middleRows<3>(3).noalias() += phi.block<3, 2>(v, l).lazyProduct(m.middleRows<2>(l));
-    pm.middleRows<3>(6).noalias() += phi.block<3, 2>(p, l).lazyProduct(m.middleRows<2>(l));
-    pm.row(9).noalias() += phi.block<1, 2>(d, l).lazyProduct(m.middleRows<2>(l));
-  }
-  return pm;
-}
-
-// (phi m phi') between the moved states, from moved_rows(): the same products by phi's non-zero
-// blocks as sandwich()'s second pass, over 10 rows instead of 25.
-Eigen::Matrix<double, kMoved, kMoved> moved_block(const StateMatrix& phi, const MovedRows& pm, bool lever) {
-  constexpr int a = kAtt, v = kVel, p = kPos, g = kGyroBias, b = kAccelBias, d = kDistance, n = kGravity, l = kLever,
-                k = kGyroSpin, q = kGyroG;
-  Eigen::Matrix<double, kMoved, kMoved> out;
-  out.middleCols<3>(0).noalias() = pm.middleCols<3>(a).lazyProduct(phi.block<3, 3>(a, a).transpose()) +
-                                   pm.middleCols<3>(g).lazyProduct(phi.block<3, 3>(a, g).transpose()) +
-                                   pm.middleCols<3>(k).lazyProduct(phi.block<3, 3>(a, k).transpose()) +
-                                   pm.middleCols<2>(q).lazyProduct(phi.block<3, 2>(a, q).transpose());
-  out.middleCols<3>(3).noalias() = pm.middleCols<3>(a).lazyProduct(phi.block<3, 3>(v, a).transpose()) +
-                                   pm.middleCols<3>(v).lazyProduct(phi.block<3, 3>(v, v).transpose()) +
-                                   pm.middleCols<3>(g).lazyProduct(phi.block<3, 3>(v, g).transpose()) +
-                                   pm.middleCols<3>(b).lazyProduct(phi.block<3, 3>(v, b).transpose()) +
-                                   pm.col(n).lazyProduct(phi.block<3, 1>(v, n).transpose()) +
-                                   pm.middleCols<3>(k).lazyProduct(phi.block<3, 3>(v, k).transpose()) +
-                                   pm.middleCols<2>(q).lazyProduct(phi.block<3, 2>(v, q).transpose());
-  out.middleCols<3>(6).noalias() = pm.middleCols<3>(p) + pm.middleCols<3>(a).lazyProduct(phi.block<3, 3>(p, a).transpose()) +
-                                   pm.middleCols<3>(v).lazyProduct(phi.block<3, 3>(p, v).transpose()) +
-                                   pm.middleCols<3>(b).lazyProduct(phi.block<3, 3>(p, b).transpose()) +
-                                   pm.col(n).lazyProduct(phi.block<3, 1>(p, n).transpose());
-  out.col(9).noalias() = pm.col(d) + pm.middleCols<3>(a).lazyProduct(phi.block<1, 3>(d, a).transpose()) +
-                         pm.middleCols<3>(v).lazyProduct(phi.block<1, 3>(d, v).transpose()) +
-                         pm.middleCols<3>(g).lazyProduct(phi.block<1, 3>(d, g).transpose()) +
-                         pm.middleCols<3>(b).lazyProduct(phi.block<1, 3>(d, b).transpose()) + phi(d, n) * pm.col(n) +
-                         pm.middleCols<3>(k).lazyProduct(phi.block<1, 3>(d, k).transpose()) +
-                         pm.middleCols<2>(q).lazyProduct(phi.block<1, 2>(d, q).transpose());
-  if (lever) {
-    out.middleCols<3>(3).noalias() += pm.middleCols<2>(l).lazyProduct(phi.block<3, 2>(v, l).transpose());
-    out.middleCols<3>(6).noalias() += pm.middleCols<2>(l).lazyProduct(phi.block<3, 2>(p, l).transpose());
-    out.col(9).noalias() += pm.middleCols<2>(l).lazyProduct(phi.block<1, 2>(d, l).transpose());
-  }
-  return out;
-}
 
 }  // namespace
 
-// predicted_covariance() in place: phi's rows other than the moved states' are the identity's, so
-// phi m phi' keeps m between those states, has (phi m)'s moved rows between them and the rest (and
-// their transpose), and needs the full sandwich only between the moved states (10 x 10 of 25 x 25).
-// P comes out exactly symmetric, as symmetrize() left it.
+// predicted_covariance() in place. phi's other rows are the identity's, so phi m phi' keeps m
+// between the other states, has (phi m)'s moved rows between them and the rest, and needs the full
+// sandwich only between the moved states (10 x 10 of 25 x 25). Those rows of phi are sparse, and
+// their zeros change with the motion (the lever arm's columns while the tool does not turn), so the
+// products run over the entries that are not zero, each a whole column of m at once (m is
+// symmetric: (phi m)' = m phi'). P comes out exactly symmetric, as symmetrize() left it.
 void ErrorStateFilter::predict(const StateMatrix& phi, double dt, const ProcessNoise& noise) {
   const StateVector half_q = 0.5 * white_noise(dt, noise);
-  p_.diagonal() += half_q;
-  const bool lever = !lever_columns_zero(phi);
-  const MovedRows pm = moved_rows(phi, p_, lever);
-  const Eigen::Matrix<double, kMoved, kMoved> moved = moved_block(phi, pm, lever);
+  p_.diagonal() += half_q;  // m = P + Q/2
+  Eigen::Matrix<double, kMoved, kStates> rows;  // phi's moved rows
+  for (int i = 0; i < kMoved; ++i) rows.row(i) = phi.row(kMovedStates[i]);
+  Eigen::Matrix<double, kStates, kMoved> m_phi = Eigen::Matrix<double, kStates, kMoved>::Zero();  // m phi[moved]'
+  for (int k = 0; k < kStates; ++k) {
+    for (int i = 0; i < kMoved; ++i) {
+      if (rows(i, k) != 0.0) m_phi.col(i).noalias() += rows(i, k) * p_.col(k);
+    }
+  }
+  const Eigen::Matrix<double, kMoved, kStates> phi_m = m_phi.transpose();
+  Eigen::Matrix<double, kMoved, kMoved> moved = Eigen::Matrix<double, kMoved, kMoved>::Zero();  // phi m phi'
+  for (int k = 0; k < kStates; ++k) {
+    for (int j = 0; j < kMoved; ++j) {
+      if (rows(j, k) != 0.0) moved.col(j).noalias() += rows(j, k) * phi_m.col(k);
+    }
+  }
+  for (int i = 0; i < kMoved; ++i) p_.col(kMovedStates[i]) = m_phi.col(i);
   for (int i = 0; i < kMoved; ++i) {
-    const int si = kMovedStates[i];
-    for (int j = 0; j < kMoved; ++j) p_(si, kMovedStates[j]) = 0.5 * (moved(i, j) + moved(j, i));
-    p_(si, si) += half_q[si];
+    for (int j = 0; j < kMoved; ++j) p_(kMovedStates[j], kMovedStates[i]) = 0.5 * (moved(i, j) + moved(j, i));
   }
-  for (int c = 0; c < kStates; ++c) {
-    if (c == kDistance || c < kGyroBias) continue;  // a moved state's column
-    for (int i = 0; i < kMoved; ++i) p_(kMovedStates[i], c) = p_(c, kMovedStates[i]) = pm(i, c);
-    p_(c, c) += half_q[c];
-  }
+  for (int i = 0; i < kMoved; ++i) p_.row(kMovedStates[i]) = p_.col(kMovedStates[i]).transpose();
+  p_.diagonal() += half_q;
 }
 
 void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bias, Eigen::Vector3d& accel_bias,

@@ -96,35 +96,34 @@ class ErrorStateFilter {
   StateVector update(const Eigen::Matrix<double, M, 1>& r, const Eigen::Matrix<double, M, kStates>& h,
                      const Eigen::Matrix<double, M, M>& noise, double* nis = nullptr) {
     // H touches a few states (zero velocity: the velocity's three; lateral velocity: attitude and
-    // velocity): P H' and H P H' are sums over H's non-zero columns only, in the same order as the
-    // full products (the terms left out are exact zeros). Kept transposed (M x 25) so that each
-    // state's M values lie together.
+    // velocity): P H' and H P H' are sums over H's non-zero columns only (the terms left out are
+    // exact zeros).
     std::array<int, kStates> touched{};
     int n_touched = 0;
     for (int j = 0; j < kStates; ++j)
       if (!h.col(j).isZero(0.0)) touched[n_touched++] = j;
-    Eigen::Matrix<double, M, kStates> hp = Eigen::Matrix<double, M, kStates>::Zero();  // H P = (P H')'
-    for (int t = 0; t < n_touched; ++t) hp.noalias() += h.col(touched[t]) * p_.row(touched[t]);
+    Eigen::Matrix<double, kStates, M> pht = Eigen::Matrix<double, kStates, M>::Zero();
+    for (int t = 0; t < n_touched; ++t) pht.noalias() += p_.col(touched[t]) * h.col(touched[t]).transpose();
     Eigen::Matrix<double, M, M> s = noise;
-    for (int t = 0; t < n_touched; ++t) s.noalias() += hp.col(touched[t]) * h.col(touched[t]).transpose();
+    for (int t = 0; t < n_touched; ++t) s.noalias() += h.col(touched[t]) * pht.row(touched[t]);
     // M <= 3: the closed-form inverse of a small symmetric positive definite matrix.
     const Eigen::Matrix<double, M, M> s_inv = s.inverse();
-    const Eigen::Matrix<double, M, kStates> kt = s_inv * hp;  // K'
-    const Eigen::Matrix<double, M, kStates> skt = s * kt;     // S K'
+    const Eigen::Matrix<double, kStates, M> k = pht.lazyProduct(s_inv);
     if (nis != nullptr) *nis = r.dot(s_inv * r);
-    // Joseph form (I-KH) P (I-KH)' + K R K', multiplied out: P - K(HP) - (K(HP))' + K S K'. The
-    // same matrix for any gain K, at 25 x 25 x M products instead of 25 x 25 x 25 ones. Each of its
-    // terms is symmetric (K S K' taken as the mean with its transpose), so only one triangle is
-    // computed and P stays exactly symmetric.
+    // Joseph form (I-KH) P (I-KH)' + K R K', multiplied out: P - K(HP) - (K(HP))' + K S K' (the
+    // same matrix for any gain K), at 25 x 25 x M products instead of 25 x 25 x 25 ones. With
+    // W = K S / 2 - P H' the change is K W' + W K': symmetric, so one triangle is computed and
+    // mirrored (P stays exactly symmetric).
+    const Eigen::Matrix<double, kStates, M> w = 0.5 * k.lazyProduct(s) - pht;
     for (int j = 0; j < kStates; ++j) {
       for (int i = 0; i <= j; ++i) {
-        const double ksk = 0.5 * (kt.col(i).dot(skt.col(j)) + kt.col(j).dot(skt.col(i)));
-        const double khp = kt.col(i).dot(hp.col(j)) + kt.col(j).dot(hp.col(i));
-        p_(i, j) += ksk - khp;
+        double d = 0;
+        for (int m = 0; m < M; ++m) d += k(i, m) * w(j, m) + w(i, m) * k(j, m);
+        p_(i, j) += d;
         p_(j, i) = p_(i, j);
       }
     }
-    return kt.transpose() * r;
+    return k * r;
   }
 
   // After feeding dx back into the whole-value state the error state is zero again; its
