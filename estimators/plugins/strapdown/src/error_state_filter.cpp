@@ -1,6 +1,7 @@
 #include "plumb/strapdown/error_state_filter.hpp"
 
 #include <array>
+#include <utility>
 
 #include "plumb/strapdown/rotation.hpp"
 
@@ -177,18 +178,26 @@ void ErrorStateFilter::predict(const StateMatrix& phi, double dt, const ProcessN
   p_.diagonal() += half_q;  // m = P + Q/2
   Eigen::Matrix<double, kMoved, kStates> rows;  // phi's moved rows
   for (int i = 0; i < kMoved; ++i) rows.row(i) = phi.row(kMovedStates[i]);
-  Eigen::Matrix<double, kStates, kMoved> m_phi = Eigen::Matrix<double, kStates, kMoved>::Zero();  // m phi[moved]'
+  // The non-zero entries (row, column), listed without a branch: the pattern is the same from one
+  // epoch to the next, but a branch per entry in the products would be mispredicted often.
+  std::array<std::pair<int, int>, kMoved * kStates> entries;
+  int n_entries = 0;
   for (int k = 0; k < kStates; ++k) {
     for (int i = 0; i < kMoved; ++i) {
-      if (rows(i, k) != 0.0) m_phi.col(i).noalias() += rows(i, k) * p_.col(k);
+      entries[n_entries] = {i, k};
+      n_entries += rows(i, k) != 0.0 ? 1 : 0;
     }
+  }
+  Eigen::Matrix<double, kStates, kMoved> m_phi = Eigen::Matrix<double, kStates, kMoved>::Zero();  // m phi[moved]'
+  for (int e = 0; e < n_entries; ++e) {
+    const auto [i, k] = entries[e];
+    m_phi.col(i).noalias() += rows(i, k) * p_.col(k);
   }
   const Eigen::Matrix<double, kMoved, kStates> phi_m = m_phi.transpose();
   Eigen::Matrix<double, kMoved, kMoved> moved = Eigen::Matrix<double, kMoved, kMoved>::Zero();  // phi m phi'
-  for (int k = 0; k < kStates; ++k) {
-    for (int j = 0; j < kMoved; ++j) {
-      if (rows(j, k) != 0.0) moved.col(j).noalias() += rows(j, k) * phi_m.col(k);
-    }
+  for (int e = 0; e < n_entries; ++e) {
+    const auto [j, k] = entries[e];
+    moved.col(j).noalias() += rows(j, k) * phi_m.col(k);
   }
   for (int i = 0; i < kMoved; ++i) p_.col(kMovedStates[i]) = m_phi.col(i);
   for (int i = 0; i < kMoved; ++i) {
