@@ -27,7 +27,7 @@ void write_drilling_errors_csv(std::ostream& out, const std::vector<DrillingRunR
   for (const auto& r : runs) {
     char name[96];
     std::snprintf(name, sizeof name, "%s %g Hz %s seed %llu", r.grade.c_str(), r.rate_hz,
-                  r.with_depth ? "depth" : "no depth", static_cast<unsigned long long>(r.seed));
+                  family_label(r.family), static_cast<unsigned long long>(r.seed));
     for (const auto& p : r.errors) {
       std::snprintf(line, sizeof line, "%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", name, p.t, p.inclination_deg,
                     p.azimuth_deg, p.toolface_deg, p.north_m, p.east_m, p.down_m);

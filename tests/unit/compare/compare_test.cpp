@@ -1,6 +1,7 @@
 // The comparison library's plumbing: progress, tables, CSV, SVG and errors (small grid).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -131,7 +132,7 @@ TEST(DrillingCompare, TacticalNavigatorMeetsTheIssueBounds) {
   DrillingCompareConfig c;
   c.grades = {"tactical"};
   c.rates_hz = {10};
-  c.with_depth = {true};
+  c.families = {DepthFamily::sensor};
   const auto runs = run_drilling_compare(c);
   ASSERT_EQ(runs.size(), 1u);
   const auto& r = runs.front();
@@ -150,6 +151,53 @@ TEST(DrillingCompare, TacticalNavigatorMeetsTheIssueBounds) {
   std::cout << table.str();
   EXPECT_NE(table.str().find("tactical"), std::string::npos);
   EXPECT_NE(table.str().find("c.azi"), std::string::npos);
+}
+
+// Each depth family reaches the navigator as it says: the rig's reports and the tally keep the end
+// position near the truth where no depth at all lets it run off along the hole.
+TEST(DrillingCompare, EachDepthFamilyFeedsTheNavigatorWhatItSays) {
+  DrillingCompareConfig c;
+  c.grades = {"tactical"};
+  c.rates_hz = {10};
+  c.families = {DepthFamily::sensor, DepthFamily::none, DepthFamily::rig, DepthFamily::tally};
+  c.depth_sd_m = 0.02;
+  c.rig.empty_between = true;
+  const auto runs = run_drilling_compare(c);
+  ASSERT_EQ(runs.size(), 4u);
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const auto& r = runs[k];
+    EXPECT_EQ(r.family, c.families[k]);
+    EXPECT_GT(r.valid, 900) << family_name(r.family) << ": " << r.first_invalid_reason;
+    EXPECT_TRUE(std::isfinite(r.attitude_coverage) && r.attitude_coverage > 0) << family_name(r.family);
+    EXPECT_TRUE(std::isfinite(r.end_position_coverage) && r.end_position_coverage > 0) << family_name(r.family);
+  }
+  const double without_depth = runs[1].end_position_percent();
+  EXPECT_GT(without_depth, 2.0);
+  for (std::size_t k : {0u, 2u, 3u}) EXPECT_LT(runs[k].end_position_percent(), without_depth / 5) << family_name(runs[k].family);
+  std::ostringstream table;
+  write_drilling_report(table, runs, c);
+  for (const char* said : {" rig ", " tally ", "empty between reports", "pipe_tally_m", "c.end"})
+    EXPECT_NE(table.str().find(said), std::string::npos) << said;
+}
+
+// A noisier sensor than its grade's preset, the navigator told only the grade: the attitude errors
+// grow with the noise.
+TEST(DrillingCompare, NoisierSensorsAreNoisier) {
+  DrillingCompareConfig c;
+  c.grades = {"mems"};
+  c.rates_hz = {100};
+  c.families = {DepthFamily::sensor};
+  const auto preset = run_drilling_compare(c);
+  c.noisier = 4;
+  const auto noisier = run_drilling_compare(c);
+  ASSERT_EQ(preset.size(), 1u);
+  ASSERT_EQ(noisier.size(), 1u);
+  const auto rms = [](const DrillingRunResult& r) {
+    return std::hypot(r.rms_inclination_deg, r.rms_azimuth_deg, r.rms_toolface_deg);
+  };
+  EXPECT_GT(rms(noisier[0]), 1.5 * rms(preset[0]));
+  c.noisier = 0;
+  EXPECT_THROW(run_drilling_compare(c), std::invalid_argument);
 }
 
 TEST(DrillingCompare, UnknownParameterIsRefusedBeforeAnyRun) {

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -52,26 +51,6 @@ inline estimator::Parameters parameters_for(const sim::DrillingScenario& s) {
   // The string's magnetization as the user would state it: the spread the simulator draws it from.
   set("mag_axial_bias_uT", s.magnetometer.axial_bias_sd_uT);
   return p;
-}
-
-// Depth as a rig reports it: once a second, `late_s` after the fact, with noise and rounding,
-// held on the rows between reports or (sparse) only on the first row after each report. The
-// samples' own depth must be exact (the scenario's depth noise off).
-inline void as_rig_reports(std::vector<Sample>& samples, double rate_hz, double sd_m, double quantum_m, double late_s,
-                           bool sparse, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> noise(0.0, sd_m);
-  const auto per_report = static_cast<std::size_t>(std::llround(rate_hz));
-  const auto late = static_cast<std::size_t>(std::llround(late_s * rate_hz));
-  std::vector<double> exact(samples.size());
-  for (std::size_t k = 0; k < samples.size(); ++k) exact[k] = samples[k].depth_m;
-  double report = exact[0];
-  for (std::size_t k = 0; k < samples.size(); ++k) {
-    const bool fresh = k % per_report == 0;
-    if (fresh) report = std::round((exact[k >= late ? k - late : 0] + noise(rng)) / quantum_m) * quantum_m;
-    samples[k].depth_m = report;
-    if (sparse && !fresh) samples[k].flags &= ~flags::kHasDepth;
-  }
 }
 
 // Runs the navigator over samples and scores its rows against the truth.

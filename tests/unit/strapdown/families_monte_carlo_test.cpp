@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "drilling_support.hpp"
+#include "plumb/sim/rig_depth.hpp"
 
 namespace plumb::strapdown::test {
 namespace {
@@ -79,7 +80,12 @@ TEST(StrapdownFamilies, RigDepthAsRigsDeliverIt) {
     std::mt19937_64 rng(seed);
     const double sd = std::uniform_real_distribution<double>(0.01, 0.05)(rng);
     const double late = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
-    as_rig_reports(s, 100, sd, seed % 2 ? 0.01 : 0.03048, late, seed % 3 == 0, seed);
+    sim::RigDepthReports reports;
+    reports.sd_m = sd;
+    reports.quantum_m = seed % 2 ? 0.01 : 0.03048;
+    reports.late_s = late;
+    reports.empty_between = seed % 3 == 0;
+    sim::as_rig_reports(s, reports, 100, seed);
   };
   // MEMS: its end position RMS(error/sigma) is 2.2 today (the inclination error of a near-horizontal
   // run adds up along the hole faster than its sigma says), and its worst attitude 0.51 deg.

@@ -101,6 +101,23 @@ TEST(StrapdownInputs, SensorNoisierThanItsPresetAligns) {
   }
 }
 
+// A MEMS tool whose accelerometer biases (2 mg per axis, 1 sigma) put |f| 6 mg (0.059 m/s^2) off the
+// gravity the user gives: before alignment nothing has estimated them yet, so the magnitude test
+// allows 3 sigma of the stated bias (without it no still period is ever found).
+TEST(StrapdownInputs, AccelerometerBiasAgainstAGivenGravityAligns) {
+  auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::mems(), 100, 3);
+  const sim::DrillingPlan& plan = scenario.plan;
+  const Eigen::Vector3d up_in_tool =
+      -c_nb(plan.inclination_deg * kPi / 180, plan.azimuth_deg * kPi / 180, plan.toolface_deg * kPi / 180).col(2);
+  scenario.accel_bias = 6e-3 * 9.80665 * up_in_tool;
+  std::map<std::string, std::uint64_t> counters;
+  const RunMetrics m = run_drilling(scenario, parameters_for(scenario), true, &counters);
+  print("mems, |f| 0.06 m/s^2 off the given gravity", m);
+  EXPECT_GT(m.valid_rows, 900u);
+  EXPECT_EQ(counters.at("still_periods"), 5u);  // alignment + four connections
+  EXPECT_LT(m.rms_z(), 1.5);
+}
+
 // Depth with centimetres of noise, rounded to 0.1 ft, stated or not: the depth test's limit
 // follows the noise (with the old fixed 1 cm no still period was ever found).
 TEST(StrapdownInputs, NoisyRigDepthAligns) {

@@ -96,7 +96,7 @@ bool StillnessDetector::window_quiet(double factor) const {
   const bool gyro_ok = window_w_mean_norm_ < factor * window_gyro_allowance_;
   if (config_.mode == StillnessConfig::Mode::Glrt) return gyro_ok && last_statistic_ < factor * config_.glrt_threshold;
   // The tolerance never falls below the sensor noise: 4 sigma per sample.
-  const double accel_tol = std::max(config_.accel_tol, 4.0 * config_.sigma_a);
+  const double accel_tol = std::max(config_.accel_tol, 4.0 * config_.sigma_a) + extra_accel_tol_;
   return gyro_ok && last_statistic_ < factor * accel_tol && window_b_dev_ < factor * config_.field_tol_uT;
 }
 
@@ -112,7 +112,7 @@ StillnessCheck StillnessDetector::binding_check(double extra_gyro_tol) const {
   if (config_.mode == StillnessConfig::Mode::Glrt) {
     consider(Test::Glrt, last_statistic_, config_.glrt_threshold);
   } else {
-    consider(Test::Acceleration, last_statistic_, std::max(config_.accel_tol, 4.0 * config_.sigma_a));
+    consider(Test::Acceleration, last_statistic_, std::max(config_.accel_tol, 4.0 * config_.sigma_a) + extra_accel_tol_);
     if (window_b_dev_ > 0) consider(Test::Field, window_b_dev_, config_.field_tol_uT);
   }
   if (stretch_n_ >= 1) {
@@ -196,6 +196,7 @@ StillnessState StillnessDetector::update(const StillnessInput& in) {
     depth_ok_exit = range < config_.hysteresis * config_.depth_tol_m;
   }
   const bool enough = window_.size() >= StillnessConfig::kMinWindowSamples;
+  extra_accel_tol_ = in.extra_accel_tol;
   if (enough) measure_window(in.g, in.extra_gyro_tol);
   const double factor = confirmed_ ? config_.hysteresis : 1.0;
   const bool quiet = enough && (confirmed_ ? depth_ok_exit : depth_ok) && window_quiet(factor);

@@ -58,6 +58,7 @@ struct StillnessInput {
   std::optional<double> field_deviation_uT;  // |B| - B0, when the field is to be checked
   std::optional<double> depth_m;
   double extra_gyro_tol = 0;                 // rad/s, what the caller does not know of w_expected
+  double extra_accel_tol = 0;                // m/s^2, what the caller does not know of |f| - g (a bias not yet estimated)
 };
 
 // One of the detector's tests at the last sample, as its statistic against its limit (the window
@@ -159,6 +160,7 @@ class StillnessDetector {
   double last_dt_ = 0, last_t_ = 0;
   Eigen::Vector3d window_f_mean_ = Eigen::Vector3d::Zero();
   double window_w_mean_norm_ = 0, window_gyro_allowance_ = 0, window_b_dev_ = 0;
+  double extra_accel_tol_ = 0;  // the last input's
   double last_statistic_ = 0;
   std::optional<double> last_depth_range_;
 };

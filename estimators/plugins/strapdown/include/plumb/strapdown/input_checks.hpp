@@ -1,0 +1,56 @@
+// The navigator's input checks: each sample refused (counted by why) or taken as a reading, a
+// saturated sensor's last good value held, no field where the magnetometer reads none, the
+// nominal sample interval and the gaps; and, for gyros stamped late or early, the readings held
+// until the gyro series reaches their instant.
+#pragma once
+
+#include <deque>
+#include <optional>
+#include <utility>
+
+#include <Eigen/Core>
+
+#include "plumb/core/sample.hpp"
+#include "plumb/strapdown/navigator_common.hpp"
+#include "plumb/strapdown/navigator_config.hpp"
+
+namespace plumb::strapdown {
+
+class InputChecks {
+ public:
+  // The per-sample counters are bumped through pointers into counters (map nodes stay put).
+  void reset(const NavigatorConfig& config, Counters& counters);
+  struct Verdict {
+    bool navigable = false;
+    bool first_without_field = false;  // the stream's first reading, and it has no field
+    bool gap = false;                  // more than max_gap_s after the reading before
+  };
+  Verdict accept(const Sample& s, InputReading& in, Counters& counters);
+  // gyro_time_offset_s: the gyro reading stamped t was measured at t + offset. A reading waits in
+  // a queue until the gyro series reaches its instant; next_ready gives the readings in turn, with
+  // the rate interpolated at it.
+  void queue(const InputReading& in);
+  std::optional<InputReading> next_ready();
+  // End of stream: the readings still waiting, with the last gyro reading there is.
+  std::optional<InputReading> next_waiting();
+
+  std::optional<double> last_t() const { return last_t_; }
+  double dt_nominal() const { return dt_nominal_; }
+  // Only samples without gyros so far: rows say strapdown needs them.
+  bool no_gyro_at_all() const { return saw_no_gyro_ && !saw_gyro_; }
+
+ private:
+  Eigen::Vector3d rate_at(double stamp) const;
+
+  NavigatorConfig config_;
+  std::uint64_t* samples_counter_ = nullptr;
+  std::uint64_t* accepted_counter_ = nullptr;
+  std::optional<double> last_t_;
+  std::optional<Eigen::Vector3d> last_good_w_, last_good_f_;
+  std::deque<InputReading> shift_queue_;
+  std::deque<std::pair<double, Eigen::Vector3d>> gyro_history_;
+  double dt_nominal_ = 0;
+  bool saw_gyro_ = false, saw_no_gyro_ = false;
+};
+
+}  // namespace plumb::strapdown

@@ -1,0 +1,50 @@
+// What the navigator's parts (navigator.hpp) share: the reading they are handed, the counters they
+// bump, the floors that keep a perfect simulated sensor from making them divide by zero, and the
+// small helpers their messages and rows use.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <string>
+
+#include <Eigen/Core>
+
+namespace plumb::strapdown {
+
+// A sample that passed the input checks.
+struct InputReading {
+  double t = 0;
+  Eigen::Vector3d f, w;
+  std::optional<Eigen::Vector3d> b;
+  std::optional<double> depth;
+  bool gyro_bad = false;  // saturated: the rate is the last good one
+  bool accel_bad = false;
+};
+
+// The reference field (|B|, dip) the detector and the magnetic updates are gated by: given, or
+// learnt at alignment.
+struct FieldReference {
+  std::optional<double> total_uT, dip;
+};
+
+// The navigator's counters by name (navigator.hpp lists them); each part bumps its own.
+using Counters = std::map<std::string, std::uint64_t>;
+inline void count(Counters& counters, const char* name, std::uint64_t n = 1) { counters[name] += n; }
+
+inline constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+inline constexpr double kRadPerSecToDegPerHour = kRadToDeg * 3600.0;
+// Noise floors: a perfect simulated sensor must not make the detector or the filter divide by 0.
+inline constexpr double kMinSigmaAccel = 1e-3;    // m/s^2 per sample
+inline constexpr double kMinSigmaGyro = 1e-6;     // rad/s per sample
+inline constexpr double kMinMeanSdGyro = 1e-9;    // rad/s, a zero-rate update's mean
+inline constexpr double kMinMeanSdAccel = 1e-6;   // m/s^2, a tilt update's mean
+
+// printf-style text of up to three numbers, for notices, warnings and reasons.
+std::string format(const char* fmt, double a, double b = 0, double c = 0);
+
+// sin(dip) = G.B / (|G||B|) with G = -f at rest (docs/conventions.md).
+double dip_of(const Eigen::Vector3d& f, const Eigen::Vector3d& b);
+
+}  // namespace plumb::strapdown

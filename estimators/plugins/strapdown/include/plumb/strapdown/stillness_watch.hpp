@@ -1,0 +1,88 @@
+// The navigator's stillness watch: the stillness detector with the limits it takes from the noise
+// (stated, or read off the data before alignment: noise_floor.hpp), the depth tolerance, the biases
+// and allowances it takes from the filter once aligned, and the notices of a run that never aligns
+// or finds no stop (never silent: which test fails, by how much, and the parameter to change).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "plumb/strapdown/error_state_filter.hpp"
+#include "plumb/strapdown/filter_state.hpp"
+#include "plumb/strapdown/navigator_common.hpp"
+#include "plumb/strapdown/navigator_config.hpp"
+#include "plumb/strapdown/noise_floor.hpp"
+#include "plumb/strapdown/stillness.hpp"
+
+namespace plumb::strapdown {
+
+class StillnessWatch {
+ public:
+  void reset(const NavigatorConfig& config);
+  // still_detector=auto: the magnitude test leans on |B|. A stream whose first sample has no field
+  // gets the GLRT, as use_magnetometer=0 does.
+  void use_glrt_without_field();
+  // A gap: the window and any period are forgotten.
+  void forget() { detector_.reset(); }
+  // The detector's noise at the nominal sample interval: measured where the user stated none.
+  void refresh_noise(double dt);
+
+  // One reading before alignment (b0: the reference |B|, when known): the noise floor, the notice
+  // of a run that cannot align, and the detector's verdict.
+  StillnessState before_alignment(const InputReading& in, std::optional<double> b0);
+  // One reading once aligned: the detector with the filter's biases and earth rate taken out.
+  StillnessState aligned(const InputReading& in, const FilterState& filter, std::optional<double> b0);
+  // At alignment: the filter takes the measured noise where none was stated and it exceeds the
+  // preset (and the log says which noise set the limits); then the detector's long means restart.
+  void adopt_measured_noise(double dt, ProcessNoise& noise);
+  void on_aligned(double t);
+  // Once aligned, at the filter's epochs (they change with the filter only): what the detector does
+  // not know of w_expected, and the biases it takes out.
+  void refresh_allowances(const FilterState& filter);
+  // Aligned: a run without a stop for no_stop_notice_s says so once.
+  void watch_for_stops(double t, bool still);
+
+  bool still() const { return detector_.still(); }
+  StillnessConfig::Mode mode() const { return detector_.config().mode; }
+  // The filter's depth noise: stated, or the larger of the default and the floor.
+  double depth_sd() const { return depth_sd_; }
+  // The depth test's limit: the largest 1 s depth change of a tool it calls still (m).
+  double depth_tolerance() const { return detector_.config().depth_tol_m; }
+  // The short reason of a row that cannot align, once the notice said the rest; empty before.
+  std::string not_aligned_reason() const;
+  std::vector<std::string> take_notices() { return std::exchange(notices_, {}); }
+
+ private:
+  StillnessInput raw_input(const InputReading& in, std::optional<double> b0) const;
+  StillnessInput aligned_input(const InputReading& in, const FilterState& filter, std::optional<double> b0) const;
+  void field_deviation(const InputReading& in, std::optional<double> b0, StillnessInput& si) const;
+  void refresh_depth_tolerance();
+  void watch_before_alignment(const InputReading& in);
+  void adopt_noise_floor();
+  bool noise_known() const;
+  std::string failing_test_text() const;
+
+  NavigatorConfig config_;
+  StillnessDetector detector_;
+  bool aligned_ = false;
+  double aligned_gyro_tol_ = 0;  // the detector's extra gyro tolerance once aligned (refresh_allowances)
+  // The biases the detector takes out once aligned: the filter's, within 3 sigma of the figures.
+  Eigen::Vector3d detector_ba_ = Eigen::Vector3d::Zero(), detector_bg_ = Eigen::Vector3d::Zero();
+  NoiseFloor noise_floor_;
+  std::size_t floor_blocks_used_ = 0;
+  // Per-sample noise read off the data, for what the user did not state (the magnitude detector).
+  std::optional<double> measured_sigma_a_, measured_sigma_w_, measured_depth_sd_;
+  double depth_sd_ = 0.01;
+  std::optional<double> first_t_;
+  StillnessTally tally_;  // what kept the detector from a still period since alignment or the last stop
+  bool align_notice_given_ = false, stop_notice_given_ = false;
+  double last_still_t_ = 0;
+  std::vector<std::string> notices_;
+};
+
+}  // namespace plumb::strapdown

@@ -1,0 +1,89 @@
+#include "plumb/strapdown/filter_state.hpp"
+
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+#include "plumb/strapdown/earth.hpp"
+
+namespace plumb::strapdown {
+
+using namespace index;
+
+void FilterState::reset(const NavigatorConfig& config) {
+  g_ = config.gravity.value_or(9.80665);
+  x_ = NavState();
+  bg_.setZero();
+  ba_.setZero();
+  lever_.setZero();
+  gyro_spin_.setZero();
+  mag_axial_ = 0;
+  lever_model_ = false;
+  kf_ = ErrorStateFilter();
+  noise_.gyro_arw = config.gyro_arw;
+  noise_.accel_vrw = config.accel_vrw;
+  noise_.gyro_bias_walk = config.gyro_bias_instability / std::sqrt(config.bias_time_s);
+  noise_.accel_bias_walk = config.accel_bias_instability / std::sqrt(config.bias_time_s);
+  integrals_.clear();
+  correction_.setZero();
+}
+
+void FilterState::start(const Eigen::Matrix3d& c_bn, double g, double latitude, bool drilling_tool,
+                        bool lever_model) {
+  g_ = g;
+  // The earth rate's horizontal part is taken along the frame's north. That is exact in a true
+  // frame (gyrocompass, or declination given); in a magnetic frame without a declination, or a
+  // relative one, it errs by the horizontal earth rate times sin(declination): 0.9 deg/h per 5 deg
+  // of declination at 45 deg latitude, a gyro-bias-like error the zero-rate updates absorb.
+  mech_ = Mechanization(earth_rate_ned(latitude, 0.0), g_);
+  drilling_tool_ = drilling_tool;
+  lever_model_ = lever_model;
+  mech_.set_lever_model(lever_model_);
+  x_ = NavState();
+  x_.q = Eigen::Quaterniond(c_bn).normalized();
+  bg_.setZero();
+  ba_.setZero();
+  lever_.setZero();
+  gyro_spin_.setZero();
+  mag_axial_ = 0;
+}
+
+ImuReading FilterState::corrected(const InputReading& in, const InputReading* earlier, bool samples_are_means,
+                                  double dt_nominal) const {
+  ImuReading r{in.t, in.f - ba_, in.w - bg_};
+  r.w.z() /= 1.0 + gyro_spin_.z();
+  r.w.head<2>() -= gyro_spin_.head<2>() * r.w.z();
+  r.w.noalias() -= gyro_g_matrix(in.f) * gyro_g_;
+  if (lever_model_ && r.w.squaredNorm() > kTurningRate2) {
+    r.f.noalias() -= centripetal_matrix(r.w) * lever_;
+    if (earlier != nullptr && in.t > earlier->t) {
+      const double spin_rate_change = (in.w.z() - earlier->w.z()) / ((in.t - earlier->t) * (1.0 + gyro_spin_.z()));
+      r.f.head<2>() -= spin_rate_change * Eigen::Vector2d(-lever_.y(), lever_.x());
+    }
+  }
+  if (samples_are_means && dt_nominal > 0) r.f = mean_to_instant(r.f, r.w, dt_nominal);
+  return r;
+}
+
+FilterState::Prediction FilterState::predict(const ProcessNoise& noise) {
+  mech_.finish(x_, &integrals_);
+  Prediction p{ErrorStateFilter::transition(integrals_, mech_.earth_rate()), integrals_.dt};
+  kf_.predict(p.phi, p.dt, noise);
+  integrals_.clear();
+  correction_.setZero();
+  return p;
+}
+
+void FilterState::begin_steps() {
+  integrals_.clear();
+  mech_.begin(x_);
+}
+
+void FilterState::apply(const StateVector& dx) {
+  feed_back(dx, x_, bg_, ba_, &lever_, &gyro_spin_, &mag_axial_, &gyro_g_);
+  correction_ += dx;
+  g_ -= dx[kGravity];
+  mech_.set_gravity(g_);
+}
+
+}  // namespace plumb::strapdown

@@ -1,0 +1,139 @@
+#include "plumb/strapdown/input_checks.hpp"
+
+#include <cmath>
+#include <cstddef>
+
+namespace plumb::strapdown {
+
+namespace {
+
+// Magnetometer readings below this are "no magnetometer" (a logger without one writes zeros).
+constexpr double kNoFieldUT = 1e-3;
+
+}  // namespace
+
+void InputChecks::reset(const NavigatorConfig& config, Counters& counters) {
+  config_ = config;
+  samples_counter_ = &counters["samples"];
+  accepted_counter_ = &counters["accepted"];
+  last_t_.reset();
+  last_good_w_.reset();
+  last_good_f_.reset();
+  shift_queue_.clear();
+  gyro_history_.clear();
+  dt_nominal_ = 0;
+  saw_gyro_ = saw_no_gyro_ = false;
+}
+
+InputChecks::Verdict InputChecks::accept(const Sample& s, InputReading& in, Counters& counters) {
+  Verdict verdict;
+  ++*samples_counter_;
+  const bool has_gyro = (s.flags & flags::kHasGyro) != 0;
+  if ((s.flags & flags::kNotFinite) != 0 || !std::isfinite(s.t) || !s.f.allFinite() ||
+      (has_gyro && !s.w.allFinite())) {
+    count(counters, "non_finite");
+    return verdict;
+  }
+  if ((s.flags & flags::kTimeBackwards) != 0 || (last_t_ && s.t < *last_t_)) {
+    count(counters, "time_backwards");
+    return verdict;
+  }
+  if (last_t_ && s.t == *last_t_) {
+    count(counters, "repeated_time");
+    return verdict;
+  }
+  if ((s.flags & flags::kOutOfRange) != 0) {
+    count(counters, "out_of_range");
+    return verdict;
+  }
+  in.t = s.t;
+  if (!has_gyro) {
+    // Rows keep coming (invalid, saying why); the sample itself cannot be navigated.
+    count(counters, "no_gyro");
+    saw_no_gyro_ = true;
+    last_t_ = s.t;
+    return verdict;
+  }
+  saw_gyro_ = true;
+  in.w = s.w;
+  if ((s.flags & flags::kGyroSaturated) != 0) {
+    count(counters, "gyro_saturated");
+    if (!last_good_w_) return verdict;
+    in.w = *last_good_w_;
+    in.gyro_bad = true;
+  } else {
+    last_good_w_ = s.w;
+  }
+  in.f = s.f;
+  if ((s.flags & flags::kAccelSaturated) != 0) {
+    count(counters, "accel_saturated");
+    if (!last_good_f_) return verdict;
+    in.f = *last_good_f_;
+    in.accel_bad = true;
+  } else {
+    last_good_f_ = s.f;
+  }
+  if ((s.flags & flags::kMagSaturated) != 0 || !s.b.allFinite()) {
+    count(counters, "mag_unusable");
+  } else if (s.b.norm() > kNoFieldUT) {
+    in.b = s.b;
+  }
+  // (No bx,by,bz columns, or a tool without magnetometers.)
+  verdict.first_without_field = !last_t_ && !in.b;
+  if ((s.flags & flags::kHasDepth) != 0 && std::isfinite(s.depth_m)) in.depth = s.depth_m;
+  if (last_t_) {
+    const double dt = s.t - *last_t_;
+    if (dt > config_.max_gap_s) {
+      count(counters, "gaps");
+      verdict.gap = true;
+    } else {
+      dt_nominal_ = dt_nominal_ > 0 ? 0.99 * dt_nominal_ + 0.01 * dt : dt;
+    }
+  }
+  last_t_ = s.t;
+  ++*accepted_counter_;
+  verdict.navigable = true;
+  return verdict;
+}
+
+void InputChecks::queue(const InputReading& in) {
+  gyro_history_.emplace_back(in.t, in.w);
+  shift_queue_.push_back(in);
+}
+
+// The rate at an accelerometer time t is the gyro series interpolated at stamp t - offset, which
+// for a negative offset lies in the future.
+Eigen::Vector3d InputChecks::rate_at(double stamp) const {
+  if (stamp <= gyro_history_.front().first) return gyro_history_.front().second;
+  for (std::size_t k = 1; k < gyro_history_.size(); ++k) {
+    const auto& [t1, w1] = gyro_history_[k];
+    if (stamp <= t1) {
+      const auto& [t0, w0] = gyro_history_[k - 1];
+      const double u = (stamp - t0) / (t1 - t0);
+      return Eigen::Vector3d(w0 + u * (w1 - w0));
+    }
+  }
+  return gyro_history_.back().second;
+}
+
+std::optional<InputReading> InputChecks::next_ready() {
+  if (shift_queue_.empty()) return std::nullopt;
+  InputReading& head = shift_queue_.front();
+  const double stamp = head.t - config_.gyro_time_offset_s;
+  if (stamp > gyro_history_.back().first) return std::nullopt;  // not measured yet
+  head.w = rate_at(stamp);
+  const InputReading ready = head;
+  shift_queue_.pop_front();
+  while (gyro_history_.size() > 2 && gyro_history_[1].first < stamp) gyro_history_.pop_front();
+  return ready;
+}
+
+std::optional<InputReading> InputChecks::next_waiting() {
+  if (shift_queue_.empty()) return std::nullopt;
+  InputReading in = shift_queue_.front();
+  shift_queue_.pop_front();
+  in.w = gyro_history_.back().second;
+  return in;
+}
+
+}  // namespace plumb::strapdown

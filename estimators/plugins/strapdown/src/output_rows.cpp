@@ -1,0 +1,171 @@
+#include "plumb/strapdown/output_rows.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+#include <Eigen/Geometry>
+
+#include "plumb/core/attitude.hpp"
+#include "plumb/strapdown/attitude_output.hpp"
+
+namespace plumb::strapdown {
+
+using namespace index;
+
+void OutputRows::reset(const NavigatorConfig& config) {
+  config_ = config;
+  gap_warning_until_ = -1;
+  next_output_t_ = 0;
+  output_started_ = false;
+  last_row_t_ = 0;
+  row_stats_.clear();
+  last_b_valid_ = false;
+  smoother_.clear();
+  pending_.clear();
+}
+
+void OutputRows::add_reading(const InputReading& in) {
+  if (in.b) {
+    last_b_ = *in.b;
+    last_b_valid_ = true;
+  }
+  row_stats_.add(in.f, in.w, in.b, in.t);
+}
+
+void OutputRows::fill_attitude(Estimate& e, const NavState& x, const StateMatrix& p, const RowContext& context) const {
+  const Eigen::Matrix3d c_bn = x.q.toRotationMatrix();
+  const AttitudeWithSigma a =
+      attitude_with_sigma(c_bn, p.block<3, 3>(kAtt, kAtt), std::sin(kMinInclinationForToolfaceDeg * kDeg));
+  e.inclination_deg = a.inclination * kRadToDeg;
+  e.azimuth_deg = a.azimuth_valid ? wrap_deg_360(a.azimuth * kRadToDeg) : 0.0;
+  e.gravity_toolface_deg = a.toolface_valid ? wrap_deg_360(a.toolface * kRadToDeg) : 0.0;
+  e.inclination_sd_deg = a.inclination_sd * kRadToDeg;
+  e.azimuth_sd_deg = a.azimuth_sd * kRadToDeg;
+  // The toolface of a turning tool is known only as well as the instant it stands for (the row's
+  // mean rate: e.rpm is filled before).
+  e.toolface_sd_deg = std::hypot(a.toolface_sd * kRadToDeg, std::abs(e.rpm) * 6.0 * config_.time_tag_sd);
+  e.valid = true;
+  e.azimuth_valid = a.azimuth_valid;
+  e.toolface_valid = a.toolface_valid;
+  NavigationState nav;
+  for (int k = 0; k < 3; ++k) {
+    nav.position_m[k] = x.p[k];
+    nav.velocity_mps[k] = x.v[k];
+    nav.position_sd_m[k] = std::sqrt(std::max(0.0, p(kPos + k, kPos + k)));
+    nav.velocity_sd_mps[k] = std::sqrt(std::max(0.0, p(kVel + k, kVel + k)));
+  }
+  nav.still = context.still;
+  nav.zero_velocity_updates = context.stops;
+  nav.azimuth_reference = context.azimuth_reference;
+  e.navigation = nav;
+}
+
+Estimate OutputRows::row(double t, const RowContext& context) const {
+  Estimate e;
+  e.estimator = "strapdown";
+  e.t_start = last_row_t_;
+  e.t_end = t;
+  e.samples_used = static_cast<std::uint32_t>(row_stats_.count());
+  if (row_stats_.count() > 0) {
+    const Eigen::Vector3d f = row_stats_.mean_f();
+    e.total_g = f.norm();
+    // Rotation speed: the tool-axis rate less the earth rate's share (below 0.01 rpm anyway).
+    e.rpm = row_stats_.mean_w().z() * 60.0 / (2.0 * std::numbers::pi);
+    e.rotating = std::abs(e.rpm) > 1.0;
+    if (row_stats_.mag_count() > 0) {
+      const Eigen::Vector3d b = row_stats_.mean_b();
+      e.total_b = b.norm();
+      e.dip_deg = dip_of(f, b) * kRadToDeg;
+    }
+  }
+  if (last_b_valid_) e.magnetic_toolface_deg = wrap_deg_360(std::atan2(-last_b_.y(), last_b_.x()) * kRadToDeg);
+  if (context.aligned && context.why.empty()) {
+    fill_attitude(e, context.filter->state(), context.filter->covariance(), context);
+    std::string warning;
+    if (t <= gap_warning_until_) warning = "time gap bridged by prediction only";
+    if (!context.field_warning.empty()) warning += (warning.empty() ? "" : "; ") + context.field_warning;
+    if (context.azimuth_reference == "relative" && !config_.initial_azimuth && !config_.gyrocompass) {
+      warning += std::string(warning.empty() ? "" : "; ") + "no magnetometer and no initial_azimuth_deg: azimuth relative to the alignment heading";
+    }
+    e.reason = warning;
+  } else {
+    e.reason = context.why;
+    NavigationState nav;
+    nav.azimuth_reference = context.azimuth_reference;
+    e.navigation = nav;
+  }
+  for (double* v : {&e.inclination_deg, &e.azimuth_deg, &e.gravity_toolface_deg, &e.magnetic_toolface_deg, &e.rpm,
+                    &e.inclination_sd_deg, &e.azimuth_sd_deg, &e.toolface_sd_deg, &e.dip_deg, &e.total_g, &e.total_b}) {
+    if (!std::isfinite(*v)) {
+      *v = 0;
+      e.valid = e.azimuth_valid = e.toolface_valid = false;
+      e.reason = "non-finite result";
+    }
+  }
+  return e;
+}
+
+bool OutputRows::due(double t) {
+  if (!output_started_) {
+    output_started_ = true;
+    next_output_t_ = t + 1.0 / config_.output_rate_hz;
+    last_row_t_ = t;
+    return false;
+  }
+  return t >= next_output_t_ - 1e-9;
+}
+
+void OutputRows::emit(double t, const RowContext& context, Counters& counters, std::vector<Estimate>& out) {
+  const double period = 1.0 / config_.output_rate_hz;
+  Estimate e = row(t, context);
+  count(counters, "rows");
+  if (!e.valid) count(counters, "invalid_rows");
+  next_output_t_ += period;
+  if (next_output_t_ <= t) next_output_t_ = t + period;
+  last_row_t_ = t;
+  row_stats_.clear();
+  if (config_.smooth) {
+    PendingRow pr{std::move(e), std::nullopt};
+    if (context.aligned && pr.row.valid && smoother_.size() > 0) pr.epoch = smoother_.size() - 1;
+    pending_.push_back(std::move(pr));
+  } else {
+    out.push_back(std::move(e));
+  }
+}
+
+void OutputRows::store_epoch(const FilterState& filter, const FilterState::Prediction& prediction) {
+  smoother_.store(prediction.phi, prediction.dt, filter.correction(), filter.state(), filter.gyro_bias(),
+                  filter.accel_bias(), filter.covariance());
+}
+
+void OutputRows::store_alignment(const FilterState& filter) {
+  smoother_.store(StateMatrix::Identity(), 0.0, filter.correction(), filter.state(), filter.gyro_bias(),
+                  filter.accel_bias(), filter.covariance());
+}
+
+void OutputRows::flush_smoothed(const ProcessNoise& noise, const RowContext& context, std::vector<Estimate>& out) {
+  std::vector<std::optional<SmoothedEpoch>> smoothed(smoother_.size());
+  std::vector<bool> wanted(smoother_.size(), false);
+  for (const PendingRow& pr : pending_) {
+    if (pr.epoch) wanted[*pr.epoch] = true;
+  }
+  smoother_.smooth(noise, [&](std::size_t k, const SmoothedEpoch& e) {
+    if (wanted[k]) smoothed[k] = e;
+  });
+  for (PendingRow& pr : pending_) {
+    if (pr.epoch && smoothed[*pr.epoch]) {
+      const std::string reason = pr.row.reason;
+      const bool still = pr.row.navigation ? pr.row.navigation->still : false;
+      const std::uint32_t zupts = pr.row.navigation ? pr.row.navigation->zero_velocity_updates : 0;
+      fill_attitude(pr.row, smoothed[*pr.epoch]->state, smoothed[*pr.epoch]->p, context);
+      pr.row.navigation->still = still;
+      pr.row.navigation->zero_velocity_updates = zupts;
+      pr.row.reason = reason;
+    }
+    out.push_back(std::move(pr.row));
+  }
+  pending_.clear();
+}
+
+}  // namespace plumb::strapdown
