@@ -88,6 +88,8 @@ class ErrorStateFilter {
   // phi m phi' for a transition() matrix (or the identity): its bias rows (9-14) are those of the
   // identity and most of its other 3 x 3 blocks are zero, so only the non-zero blocks take a product.
   static StateMatrix sandwich(const StateMatrix& phi, const StateMatrix& m);
+  // predicted_covariance() in place, P exactly symmetric after it: for any phi whose rows other
+  // than attitude, velocity, position and distance are the identity's, as transition()'s are.
   void predict(const StateMatrix& phi, double dt, const ProcessNoise& noise);
 
   // One measurement: Joseph-form update, P kept symmetric. Returns the error estimate (to feed
