@@ -182,5 +182,63 @@ TEST(ErrorStateFilterAlgebra, StructuredProductsEqualThePlainOnes) {
   EXPECT_LT((kf.covariance() - joseph).norm(), 1e-10 * joseph.norm());
 }
 
+// The in-place prediction (phi's moved rows only, over their non-zero entries) and the update over
+// H's non-zero columns equal the plain products, with every column of phi in use (a turning tool:
+// lever arm, spin and g-sensitivity) and with the lever arm's columns zero (a tool that does not turn).
+TEST(ErrorStateFilterAlgebra, SparsePredictionAndUpdateEqualThePlainOnes) {
+  const StateMatrix a = StateMatrix::Random();
+  const StateMatrix p = a * a.transpose() + StateMatrix::Identity();
+  ProcessNoise noise;
+  noise.gyro_arw = 1e-4;
+  noise.accel_vrw = 2e-3;
+  noise.gyro_bias_walk = 1e-6;
+  noise.accel_bias_walk = 1e-5;
+  for (const bool turning : {true, false}) {
+    StepIntegrals step;
+    step.dt = 0.05;
+    step.c_bn = c_nb(0.3, 1.2, -0.7).transpose() * step.dt;
+    step.f_n = Eigen::Vector3d(1.1, -0.4, -9.7) * step.dt;
+    step.axis_n = Eigen::Vector3d(0.2, 0.3, 0.93) * step.dt;
+    step.axis_cross_v = Eigen::Vector3d(0.01, -0.02, 0.005) * step.dt;
+    step.spin_frame = c_nb(0.1, 0.2, 0.3).transpose() * (3.0 * step.dt);
+    step.c_gyro_g = Eigen::Matrix<double, 3, 2>::Random() * step.dt;
+    if (turning) step.c_lever = Eigen::Matrix<double, 3, 2>::Random() * step.dt;
+    const StateMatrix phi = ErrorStateFilter::transition(step, Eigen::Vector3d(5e-5, 0, -5e-5));
+    if (!turning) {
+      EXPECT_TRUE((phi.block<9, 2>(0, index::kLever).isZero(0.0)));  // the columns skipped
+    }
+    ErrorStateFilter kf;
+    kf.reset(p);
+    kf.predict(phi, step.dt, noise);
+    const StateMatrix plain = ErrorStateFilter::predicted_covariance(phi, p, step.dt, noise);
+    const StateMatrix expected = 0.5 * (plain + plain.transpose());
+    EXPECT_LT((kf.covariance() - expected).norm(), 1e-13 * expected.norm()) << (turning ? "turning" : "not turning");
+    EXPECT_EQ(kf.covariance(), kf.covariance().transpose());
+  }
+  // A velocity-only H (zero velocity) and one on attitude and velocity (lateral velocity).
+  Eigen::Matrix<double, 2, kStates> h = Eigen::Matrix<double, 2, kStates>::Zero();
+  h.block<2, 6>(0, index::kAtt) = Eigen::Matrix<double, 2, 6>::Random();
+  const Eigen::Matrix2d r = Eigen::Vector2d(0.1, 0.2).asDiagonal();
+  const Eigen::Matrix<double, kStates, 2> k = p * h.transpose() * (h * p * h.transpose() + r).inverse();
+  const StateMatrix ikh = StateMatrix::Identity() - k * h;
+  const StateMatrix joseph = ikh * p * ikh.transpose() + k * r * k.transpose();
+  ErrorStateFilter kf;
+  kf.reset(p);
+  const Eigen::Vector2d residual(0.1, -0.2);
+  const StateVector dx = kf.update<2>(residual, h, r);
+  EXPECT_LT((kf.covariance() - joseph).norm(), 1e-12 * joseph.norm());
+  EXPECT_LT((dx - k * residual).norm(), 1e-12 * (k * residual).norm());
+  EXPECT_EQ(kf.covariance(), kf.covariance().transpose());
+  Eigen::Matrix<double, 3, kStates> hv = Eigen::Matrix<double, 3, kStates>::Zero();
+  hv.block<3, 3>(0, index::kVel).setIdentity();
+  const Eigen::Matrix3d rv = Eigen::Matrix3d::Identity() * 1e-4;
+  const Eigen::Matrix<double, kStates, 3> kv = p * hv.transpose() * (hv * p * hv.transpose() + rv).inverse();
+  const StateMatrix ikhv = StateMatrix::Identity() - kv * hv;
+  const StateMatrix josephv = ikhv * p * ikhv.transpose() + kv * rv * kv.transpose();
+  kf.reset(p);
+  kf.update<3>(Eigen::Vector3d(0.01, 0.02, -0.01), hv, rv);
+  EXPECT_LT((kf.covariance() - josephv).norm(), 1e-12 * josephv.norm());
+}
+
 }  // namespace
 }  // namespace plumb::strapdown::test

@@ -1,5 +1,8 @@
 #include "plumb/strapdown/error_state_filter.hpp"
 
+#include <array>
+#include <utility>
+
 #include "plumb/strapdown/rotation.hpp"
 
 namespace plumb::strapdown {
@@ -156,9 +159,52 @@ StateMatrix ErrorStateFilter::predicted_covariance(const StateMatrix& phi, const
   return out;
 }
 
+namespace {
+
+// The states whose rows of phi are not the identity's: attitude, velocity, position, distance.
+constexpr int kMoved = 10;
+constexpr std::array<int, kMoved> kMovedStates = {0, 1, 2, 3, 4, 5, 6, 7, 8, kDistance};
+
+}  // namespace
+
+// predicted_covariance() in place. phi's other rows are the identity's, so phi m phi' keeps m
+// between the other states, has (phi m)'s moved rows between them and the rest, and needs the full
+// sandwich only between the moved states (10 x 10 of 25 x 25). Those rows of phi are sparse, and
+// their zeros change with the motion (the lever arm's columns while the tool does not turn), so the
+// products run over the entries that are not zero, each a whole column of m at once (m is
+// symmetric: (phi m)' = m phi'). P comes out exactly symmetric, as symmetrize() left it.
 void ErrorStateFilter::predict(const StateMatrix& phi, double dt, const ProcessNoise& noise) {
-  p_ = predicted_covariance(phi, p_, dt, noise);
-  symmetrize();
+  const StateVector half_q = 0.5 * white_noise(dt, noise);
+  p_.diagonal() += half_q;  // m = P + Q/2
+  Eigen::Matrix<double, kMoved, kStates> rows;  // phi's moved rows
+  for (int i = 0; i < kMoved; ++i) rows.row(i) = phi.row(kMovedStates[i]);
+  // The non-zero entries (row, column), listed without a branch: the pattern is the same from one
+  // epoch to the next, but a branch per entry in the products would be mispredicted often.
+  std::array<std::pair<int, int>, kMoved * kStates> entries;
+  int n_entries = 0;
+  for (int k = 0; k < kStates; ++k) {
+    for (int i = 0; i < kMoved; ++i) {
+      entries[n_entries] = {i, k};
+      n_entries += rows(i, k) != 0.0 ? 1 : 0;
+    }
+  }
+  Eigen::Matrix<double, kStates, kMoved> m_phi = Eigen::Matrix<double, kStates, kMoved>::Zero();  // m phi[moved]'
+  for (int e = 0; e < n_entries; ++e) {
+    const auto [i, k] = entries[e];
+    m_phi.col(i).noalias() += rows(i, k) * p_.col(k);
+  }
+  const Eigen::Matrix<double, kMoved, kStates> phi_m = m_phi.transpose();
+  Eigen::Matrix<double, kMoved, kMoved> moved = Eigen::Matrix<double, kMoved, kMoved>::Zero();  // phi m phi'
+  for (int e = 0; e < n_entries; ++e) {
+    const auto [j, k] = entries[e];
+    moved.col(j).noalias() += rows(j, k) * phi_m.col(k);
+  }
+  for (int i = 0; i < kMoved; ++i) p_.col(kMovedStates[i]) = m_phi.col(i);
+  for (int i = 0; i < kMoved; ++i) {
+    for (int j = 0; j < kMoved; ++j) p_(kMovedStates[j], kMovedStates[i]) = 0.5 * (moved(i, j) + moved(j, i));
+  }
+  for (int i = 0; i < kMoved; ++i) p_.row(kMovedStates[i]) = p_.col(kMovedStates[i]).transpose();
+  p_.diagonal() += half_q;
 }
 
 void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bias, Eigen::Vector3d& accel_bias,

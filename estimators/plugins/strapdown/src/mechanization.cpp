@@ -30,6 +30,16 @@ inline Eigen::Quaterniond rotation_quaternion(const Eigen::Vector3d& phi) {
   return Eigen::Quaterniond(c, s * phi.x(), s * phi.y(), s * phi.z());
 }
 
+// C~ G(f) (gyro_g_matrix) from C~ f: G(f)'s columns are (f_x, f_y, 0) and e_z x f, and a rotation
+// turns a cross product into the cross product of the turned vectors.
+inline Eigen::Matrix<double, 3, 2> tool_gyro_g(const Eigen::Matrix3d& c, const Eigen::Vector3d& f,
+                                               const Eigen::Vector3d& cf) {
+  Eigen::Matrix<double, 3, 2> m;
+  m.col(0) = cf - c.col(2) * f.z();
+  m.col(1) = c.col(2).cross(cf);
+  return m;
+}
+
 }  // namespace
 
 Eigen::Vector3d mean_to_instant(const Eigen::Vector3d& mean_f, const Eigen::Vector3d& w, double dt) {
@@ -131,7 +141,10 @@ void Mechanization::step(const ImuReading& a, const ImuReading& b, const ImuRead
   c_int_ += (0.5 * dt) * (c_ + c1);
   axis_cross_v_int_ += 0.5 * dt * (axa + axb);
   spin_int_ += (0.5 * dt) * (a.w.z() * c_ + b.w.z() * c1);
-  gyro_g_int_ += (0.5 * dt) * (c_ * gyro_g_matrix(a.f) + c1 * gyro_g_matrix(b.f));
+  const Eigen::Matrix<double, 3, 2> ga =
+      stepped_ && a.f == last_raw_f_ ? last_gyro_g_ : tool_gyro_g(c_, a.f, c_.lazyProduct(a.f));
+  const Eigen::Matrix<double, 3, 2> gb = tool_gyro_g(c1, b.f, fb);
+  gyro_g_int_ += (0.5 * dt) * (ga + gb);
   if (lever_model_) {
     // C~ L(w) at b is the next step's value at a.
     const auto turning = [](const Eigen::Vector3d& w) { return w.squaredNorm() > kTurningRate2; };
@@ -147,6 +160,8 @@ void Mechanization::step(const ImuReading& a, const ImuReading& b, const ImuRead
   c_ = c1;
   last_f_ = fb;
   last_axis_cross_v_ = axb;
+  last_gyro_g_ = gb;
+  last_raw_f_ = b.f;
   stepped_ = true;
 }
 

@@ -34,6 +34,8 @@
 // Measurements are residuals r = h(estimate) - z = H dx + noise.
 #pragma once
 
+#include <array>
+
 #include <Eigen/Core>
 #include <Eigen/LU>
 
@@ -86,6 +88,8 @@ class ErrorStateFilter {
   // phi m phi' for a transition() matrix (or the identity): its bias rows (9-14) are those of the
   // identity and most of its other 3 x 3 blocks are zero, so only the non-zero blocks take a product.
   static StateMatrix sandwich(const StateMatrix& phi, const StateMatrix& m);
+  // predicted_covariance() in place, P exactly symmetric after it: for any phi whose rows other
+  // than attitude, velocity, position and distance are the identity's, as transition()'s are.
   void predict(const StateMatrix& phi, double dt, const ProcessNoise& noise);
 
   // One measurement: Joseph-form update, P kept symmetric. Returns the error estimate (to feed
@@ -93,21 +97,34 @@ class ErrorStateFilter {
   template <int M>
   StateVector update(const Eigen::Matrix<double, M, 1>& r, const Eigen::Matrix<double, M, kStates>& h,
                      const Eigen::Matrix<double, M, M>& noise, double* nis = nullptr) {
-    // Every product here is lazy (coefficient by coefficient): with a 16-long side they are too
-    // small for the blocked matrix product Eigen would otherwise pick.
-    const Eigen::Matrix<double, kStates, M> pht = p_.lazyProduct(h.transpose());
-    const Eigen::Matrix<double, M, M> s = h.lazyProduct(pht) + noise;
+    // H touches a few states (zero velocity: the velocity's three; lateral velocity: attitude and
+    // velocity): P H' and H P H' are sums over H's non-zero columns only (the terms left out are
+    // exact zeros).
+    std::array<int, kStates> touched{};
+    int n_touched = 0;
+    for (int j = 0; j < kStates; ++j)
+      if (!h.col(j).isZero(0.0)) touched[n_touched++] = j;
+    Eigen::Matrix<double, kStates, M> pht = Eigen::Matrix<double, kStates, M>::Zero();
+    for (int t = 0; t < n_touched; ++t) pht.noalias() += p_.col(touched[t]) * h.col(touched[t]).transpose();
+    Eigen::Matrix<double, M, M> s = noise;
+    for (int t = 0; t < n_touched; ++t) s.noalias() += h.col(touched[t]) * pht.row(touched[t]);
     // M <= 3: the closed-form inverse of a small symmetric positive definite matrix.
     const Eigen::Matrix<double, M, M> s_inv = s.inverse();
     const Eigen::Matrix<double, kStates, M> k = pht.lazyProduct(s_inv);
     if (nis != nullptr) *nis = r.dot(s_inv * r);
-    // Joseph form (I-KH) P (I-KH)' + K R K', multiplied out: P - K(HP) - (K(HP))' + K S K'. The
-    // same matrix for any gain K, at 16 x 16 x M products instead of 16 x 16 x 16 ones. P stays
-    // exactly symmetric in the same pass: K(HP) + (K(HP))' is, and K S K' is taken as the mean with
-    // its transpose (what symmetrize() did afterwards).
-    const StateMatrix khp = k.lazyProduct(pht.transpose());
-    const StateMatrix ksk = k.lazyProduct(s).lazyProduct(k.transpose());
-    p_ += 0.5 * (ksk + ksk.transpose()) - (khp + khp.transpose());
+    // Joseph form (I-KH) P (I-KH)' + K R K', multiplied out: P - K(HP) - (K(HP))' + K S K' (the
+    // same matrix for any gain K), at 25 x 25 x M products instead of 25 x 25 x 25 ones. With
+    // W = K S / 2 - P H' the change is K W' + W K': symmetric, so one triangle is computed and
+    // mirrored (P stays exactly symmetric).
+    const Eigen::Matrix<double, kStates, M> w = 0.5 * k.lazyProduct(s) - pht;
+    for (int j = 0; j < kStates; ++j) {
+      for (int i = 0; i <= j; ++i) {
+        double d = 0;
+        for (int m = 0; m < M; ++m) d += k(i, m) * w(j, m) + w(i, m) * k(j, m);
+        p_(i, j) += d;
+        p_(j, i) = p_(i, j);
+      }
+    }
     return k * r;
   }
 

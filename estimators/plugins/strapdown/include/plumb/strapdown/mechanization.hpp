@@ -151,6 +151,9 @@ class Mechanization {
   bool lever_model_ = false;
   // Of the last reading (valid after the first step since begin()): C~ f, and axis x velocity in b0.
   Eigen::Vector3d last_f_ = Eigen::Vector3d::Zero(), last_axis_cross_v_ = Eigen::Vector3d::Zero();
+  // C~ G(f) of the last reading and that reading's f (the next step's first reading when it is the same).
+  Eigen::Matrix<double, 3, 2> last_gyro_g_ = Eigen::Matrix<double, 3, 2>::Zero();
+  Eigen::Vector3d last_raw_f_ = Eigen::Vector3d::Zero();
   bool stepped_ = false;
   // The earth's turn of b0 over the last step's dt (0: none yet since begin()).
   double earth_dt_ = 0;
