@@ -17,6 +17,7 @@ void FilterState::reset(const NavigatorConfig& config) {
   ba_.setZero();
   lever_.setZero();
   gyro_spin_.setZero();
+  gyro_g_.setZero();
   mag_axial_ = 0;
   lever_model_ = false;
   kf_ = ErrorStateFilter();
@@ -45,6 +46,7 @@ void FilterState::start(const Eigen::Matrix3d& c_bn, double g, double latitude, 
   ba_.setZero();
   lever_.setZero();
   gyro_spin_.setZero();
+  gyro_g_.setZero();
   mag_axial_ = 0;
 }
 

@@ -47,6 +47,7 @@ void StopUpdates::reset(const NavigatorConfig& config) {
   stop_settled_ = false;
   last_field_warning_.clear();
   lateral_excess_.setZero();
+  last_stop_attitude_.reset();
 }
 
 void StopUpdates::take_depth(double t, double depth, bool prev_had_depth, const FilterState& filter) {
