@@ -87,10 +87,11 @@ TEST(StrapdownFamilies, RigDepthAsRigsDeliverIt) {
     reports.empty_between = seed % 3 == 0;
     sim::as_rig_reports(s, reports, 100, seed);
   };
-  // MEMS: its end position RMS(error/sigma) is 2.2 today (the inclination error of a near-horizontal
-  // run adds up along the hole faster than its sigma says), and its worst attitude 0.51 deg.
+  // The targets for both grades: attitude 0.2 deg (tactical) and 0.5 deg (MEMS), end position
+  // 1 % of MD and RMS(error/sigma) 2. (MEMS met them once the accelerometer triad's bias was renewed
+  // after each turn: 0.46 deg, 0.52 %, 1.92; before, 0.51 deg and 2.2.)
   for (const auto& [grade, max_attitude, end_bound] :
-       {std::tuple{sim::ImuGrade::tactical(), 0.2, 2.0}, std::tuple{sim::ImuGrade::mems(), 0.55, 2.5}}) {
+       {std::tuple{sim::ImuGrade::tactical(), 0.2, 2.0}, std::tuple{sim::ImuGrade::mems(), 0.5, 2.0}}) {
     const FamilyResult f = sweep(("rig depth, " + grade.name).c_str(), grade, 100, rig);
     expect_honest(f, end_bound);
     EXPECT_LE(f.worst_attitude_deg, max_attitude) << grade.name;
