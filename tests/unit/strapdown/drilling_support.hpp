@@ -28,7 +28,16 @@ struct RunMetrics {
   double max_attitude_err_deg() const { return std::max({max_inc_err_deg, max_azi_err_deg, max_tf_err_deg}); }
   double end_position_pct() const { return drilled_m > 0 ? 100.0 * end_position_err_m / drilled_m : 0.0; }
   double rms_z() const { return n_z > 0 ? std::sqrt(sum_z2 / n_z) : 0.0; }
+  double end_position_rms_z() const { return std::sqrt(end_position_z2 / 3); }
 };
+
+// A scenario's samples and the truth beside them.
+inline std::pair<std::vector<Sample>, std::vector<TruthSample>> simulate(const sim::DrillingScenario& scenario) {
+  sim::DrillingSimulator simulator(scenario);
+  std::vector<TruthSample> truth;
+  std::vector<Sample> samples = simulator.run(&truth);
+  return {std::move(samples), std::move(truth)};
+}
 
 // Parameters matching a scenario's sensors (what a user of that tool would set).
 inline estimator::Parameters parameters_for(const sim::DrillingScenario& s) {

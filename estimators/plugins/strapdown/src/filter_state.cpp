@@ -13,12 +13,7 @@ using namespace index;
 void FilterState::reset(const NavigatorConfig& config) {
   g_ = config.gravity.value_or(9.80665);
   x_ = NavState();
-  bg_.setZero();
-  ba_.setZero();
-  lever_.setZero();
-  gyro_spin_.setZero();
-  gyro_g_.setZero();
-  mag_axial_ = 0;
+  clear_estimates();
   lever_model_ = false;
   kf_ = ErrorStateFilter();
   noise_.gyro_arw = config.gyro_arw;
@@ -42,6 +37,10 @@ void FilterState::start(const Eigen::Matrix3d& c_bn, double g, double latitude, 
   mech_.set_lever_model(lever_model_);
   x_ = NavState();
   x_.q = Eigen::Quaterniond(c_bn).normalized();
+  clear_estimates();
+}
+
+void FilterState::clear_estimates() {
   bg_.setZero();
   ba_.setZero();
   lever_.setZero();

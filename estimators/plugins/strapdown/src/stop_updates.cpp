@@ -221,7 +221,7 @@ void StopUpdates::turned_since_last_stop(FilterState& filter) const {
   if (!(sd_k > 0)) return;
   const Eigen::AngleAxisd turn(filter.state().q * last_stop_attitude_->conjugate());
   const double share = std::min(2.0, 4.0 * turn.angle() * turn.angle());
-  const double g = 9.80665;
+  const double g = filter.gravity();
   filter.covariance().block<3, 3>(kAccelBias, kAccelBias).diagonal().array() += share * (g * sd_k) * (g * sd_k);
 }
 

@@ -65,6 +65,8 @@ class FilterState {
   bool lever_model() const { return lever_model_; }
 
  private:
+  // The sensor errors the filter estimates, back to zero (biases, lever arm, spin response, ...).
+  void clear_estimates();
   void apply(const StateVector& dx);
 
   NavState x_;
