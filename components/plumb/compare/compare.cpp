@@ -154,13 +154,13 @@ int run_drilling(const CompareOptions& o, const CLI::App& cmd, bool estimators_g
   compare::write_drilling_report(std::cout, runs, c);
   if (!o.plots_dir.empty()) {
     std::filesystem::create_directories(o.plots_dir);
-    const std::string path = o.plots_dir + "/drilling_errors.csv";
+    const std::string path = (std::filesystem::path(o.plots_dir) / "drilling_errors.csv").string();
     {
       std::ofstream f(path);
       if (!f) throw std::runtime_error("cannot write '" + path + "'");
       compare::write_drilling_errors_csv(f, runs);
     }
-    run_plot("drilling", path, o.plots_dir + "/drilling_errors.png");
+    run_plot("drilling", path, (std::filesystem::path(o.plots_dir) / "drilling_errors.png").string());
   }
   return 0;
 }
@@ -195,7 +195,7 @@ int run(const CompareOptions& o) {
   }
   if (!o.plots_dir.empty()) {
     std::filesystem::create_directories(o.plots_dir);
-    const std::string path = o.plots_dir + "/azimuth_points.csv";
+    const std::string path = (std::filesystem::path(o.plots_dir) / "azimuth_points.csv").string();
     {
       std::ofstream f(path);
       if (!f) throw std::runtime_error("cannot write '" + path + "'");

@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <filesystem>
+#include <iostream>
 #include <stdexcept>
 #include <vector>
 
@@ -18,6 +19,9 @@ void run_plot(const std::string& kind, const std::string& input, const std::stri
   const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
   const std::string script = (ec ? std::filesystem::path(".") : self.parent_path()) / "plumb-plot";
   if (!std::filesystem::exists(script)) throw std::runtime_error("no plumb-plot beside plumb (" + script + ")");
+  // What was printed so far shows before the drawing starts: a piped stdout is block-buffered.
+  std::cout.flush();
+  std::cerr << "plumb: drawing " << output << " (plumb-plot " << kind << ")" << std::endl;
   std::vector<std::string> args = {script, kind, input, "-o", output};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
