@@ -31,6 +31,7 @@ void Navigator::reset() {
   filter_.reset(config_);
   stops_.reset(config_);
   rows_.reset(config_);
+  lag_.reset(config_.stop_lag_s);
 }
 
 // ---- input -------------------------------------------------------------------------------------
@@ -59,13 +60,22 @@ void Navigator::push(const Sample& s, std::vector<Estimate>& out) {
 
 // ---- processing ----------------------------------------------------------------------------------
 
+// Before alignment every reading goes straight on (the first rows must not wait); once aligned,
+// the detector judges each reading as it comes, and the filter takes it stop_lag_s later with the
+// decision as known then (stillness_lag.hpp).
 void Navigator::process(const Input& in, std::vector<Estimate>& out) {
   watch_.refresh_noise(checks_.dt_nominal());
-  rows_.add_reading(in);
   if (!aligned_) {
+    rows_.add_reading(in);
     before_alignment(in, out);
     return;
   }
+  lag_.push(in, watch_.aligned(in, filter_, aligner_.field().total_uT));
+  while (const std::optional<StillnessLag::Entry> ready = lag_.pop_ready()) navigate(ready->reading, ready->still, out);
+}
+
+void Navigator::navigate(const Input& in, const StillnessState& still, std::vector<Estimate>& out) {
+  rows_.add_reading(in);
   const bool means = config_.samples_are_means;
   const ImuReading a = filter_.corrected(*prev_, prev2_ ? &*prev2_ : nullptr, means, checks_.dt_nominal());
   const ImuReading b = filter_.corrected(in, &*prev_, means, checks_.dt_nominal());
@@ -76,7 +86,7 @@ void Navigator::process(const Input& in, std::vector<Estimate>& out) {
     filter_.step(a, b, nullptr);
   }
   if (in.depth) stops_.take_depth(in.t, *in.depth, prev_->depth.has_value(), filter_);
-  still_state_ = watch_.aligned(in, filter_, aligner_.field().total_uT);
+  still_state_ = still;
   stops_.follow(in, still_state_, counters_);
   const double kf_dt = 1.0 / config_.kf_rate_hz;
   const bool due = in.t - last_epoch_t_ >= kf_dt - 0.5 * checks_.dt_nominal();
@@ -127,7 +137,7 @@ void Navigator::align(const Input& in) {
   stops_.at_alignment(filter_, coarse->stats, sd_mean_f, dt, aligner_.use_mag(), aligner_.field(), in.depth,
                       counters_);
   filter_.begin_steps();
-  watch_.refresh_allowances(filter_);
+  watch_.refresh_allowances(filter_, in.t);
   if (config_.smooth) {
     rows_.store_alignment(filter_);
     filter_.clear_correction();
@@ -142,7 +152,7 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
                   aligner_.use_mag(), aligner_.field(), counters_);
   // The minor steps go on from the corrected state.
   filter_.begin_steps();
-  watch_.refresh_allowances(filter_);
+  watch_.refresh_allowances(filter_, in.t);
   watch_.watch_for_stops(in.t, still_state_.still);
   if (config_.smooth) rows_.store_epoch(filter_, prediction);
   emit(in.t, out);
@@ -168,7 +178,7 @@ RowContext Navigator::row_context() const {
   c.aligned = aligned_;
   c.why = reason();
   c.filter = &filter_;
-  c.still = watch_.still();
+  c.still = aligned_ ? still_state_.still : watch_.still();
   c.stops = stops_.stops();
   c.azimuth_reference = aligner_.azimuth_reference();
   c.field_warning = stops_.field_warning();
@@ -182,6 +192,8 @@ void Navigator::emit(double t, std::vector<Estimate>& out) {
 void Navigator::flush(std::vector<Estimate>& out) {
   // Samples waiting for a later gyro reading: use the last one there is.
   while (const std::optional<Input> waiting = checks_.next_waiting()) process(*waiting, out);
+  // The readings the filter has not reached yet, with the decisions known at the end.
+  while (const std::optional<StillnessLag::Entry> waiting = lag_.pop_any()) navigate(waiting->reading, waiting->still, out);
   // A recording that ends inside its first still period aligns on what it has.
   if (!aligned_ && aligner_.can_align_at_end(watch_.still()) && prev_) {
     const Input last = *prev_;

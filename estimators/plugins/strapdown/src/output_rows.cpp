@@ -15,7 +15,7 @@ using namespace index;
 
 void OutputRows::reset(const NavigatorConfig& config) {
   config_ = config;
-  gap_warning_until_ = -1;
+  gap_warning_from_ = gap_warning_until_ = -1;
   next_output_t_ = 0;
   output_started_ = false;
   last_row_t_ = 0;
@@ -83,7 +83,7 @@ Estimate OutputRows::row(double t, const RowContext& context) const {
   if (context.aligned && context.why.empty()) {
     fill_attitude(e, context.filter->state(), context.filter->covariance(), context);
     std::string warning;
-    if (t <= gap_warning_until_) warning = "time gap bridged by prediction only";
+    if (t >= gap_warning_from_ && t <= gap_warning_until_) warning = "time gap bridged by prediction only";
     if (!context.field_warning.empty()) warning += (warning.empty() ? "" : "; ") + context.field_warning;
     if (context.azimuth_reference == "relative" && !config_.initial_azimuth && !config_.gyrocompass) {
       warning += std::string(warning.empty() ? "" : "; ") + "no magnetometer and no initial_azimuth_deg: azimuth relative to the alignment heading";

@@ -121,6 +121,7 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"tilt_update", "0", "separate accelerometer tilt update at stops (1: counts the accelerometer noise twice with the zero-velocity updates)"},
       {"lateral_velocity_update", "1", "while moving, lateral velocity zero in the tool frame (a drilling tool; 0 for a foot, hand-carried or vehicle-mounted sensor)"},
       {"nhc_sd_mps", "0.01", "lateral velocity of a drilling tool, 1 sigma (m/s)"},
+      {"stop_lag_s", "2", "the filter runs this far behind the stillness detector: a stop that ends takes back its last stop_lag_s of zero-velocity updates (a drilling string that speeds up slowly is seen moving late), and one shorter than that is none; once aligned, every row comes this much later (s; 0: no lag)"},
       {"stop_settle_s", "2", "without depth, a drilling string that slows over seconds looks still before it is: for this long after a stop is confirmed its velocity is zero only within rop_sd_mps, and a stop that ends sooner was none (s; 0: every stop at once)"},
       {"rop_sd_mps", "0.02", "rate of penetration, 1 sigma (m/s): a still period's end is seen late when the string speeds up slowly, and the tool may already move at this speed"},
       {"depth_sd_m", "", "measured depth noise, 1 sigma (m); empty: 0.01 or what the depth reports show before alignment, whichever is larger"},
@@ -222,6 +223,7 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   c.tilt_update = r.boolean("tilt_update");
   c.lateral_velocity_update = r.boolean("lateral_velocity_update");
   c.nhc_sd = r.number("nhc_sd_mps", 1e-9, 10);
+  c.stop_lag_s = r.number("stop_lag_s", 0, 60);
   c.stop_settle_s = r.number("stop_settle_s", 0, 600);
   c.rop_sd = r.number("rop_sd_mps", 0, 10);
   const std::optional<double> depth_sd = optional_number(r, given, "depth_sd_m", 1e-9, 100);

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "plumb/strapdown/earth.hpp"
+#include "plumb/strapdown/rotation.hpp"
 
 namespace plumb::strapdown {
 
@@ -27,6 +28,9 @@ void StillnessWatch::reset(const NavigatorConfig& config) {
   aligned_gyro_tol_ = 0;
   detector_ba_.setZero();
   detector_bg_.setZero();
+  tool_attitude_ = Eigen::Quaterniond::Identity();
+  turns_.clear();
+  earth_rate_tool0_.setZero();
   StillnessConfig sc;
   sc.mode = config_.detector == DetectorChoice::Glrt ? StillnessConfig::Mode::Glrt : StillnessConfig::Mode::Magnitude;
   if (config_.detector == DetectorChoice::Auto && !config_.use_magnetometer) sc.mode = StillnessConfig::Mode::Glrt;
@@ -91,7 +95,7 @@ StillnessInput StillnessWatch::aligned_input(const InputReading& in, const Filte
   // allow: a filter that has drifted off (no depth, a missed stop) must not blind the detector
   // to the very stops that would bring it back. (refresh_allowances keeps them, once per epoch.)
   si.f = in.f - detector_ba_;
-  si.w_minus_expected = in.w - detector_bg_ - filter.mechanization().earth_rate_in_tool();
+  si.w_minus_expected = in.w - detector_bg_ - tool_attitude_.conjugate() * earth_rate_tool0_;
   si.extra_gyro_tol = aligned_gyro_tol_;
   si.g = filter.gravity();
   field_deviation(in, b0, si);
@@ -116,6 +120,7 @@ StillnessState StillnessWatch::before_alignment(const InputReading& in, std::opt
 }
 
 StillnessState StillnessWatch::aligned(const InputReading& in, const FilterState& filter, std::optional<double> b0) {
+  turn_with(in);
   const bool was_still = detector_.still();
   if (in.gyro_bad || in.accel_bad) {
     detector_.reset();
@@ -126,7 +131,25 @@ StillnessState StillnessWatch::aligned(const InputReading& in, const FilterState
   return detector_.update(aligned_input(in, filter, b0));
 }
 
-void StillnessWatch::refresh_allowances(const FilterState& filter) {
+// The filter runs behind the detector (stillness_lag.hpp): the detector takes the earth rate out
+// with the tool's attitude carried forward from the filter's by the readings since. (While the tool
+// turns, the filter's own toolface of seconds ago would misplace the earth rate by up to twice its
+// horizontal part; the biases and allowances below change slowly, and the filter's lagging ones do.)
+void StillnessWatch::turn_with(const InputReading& in) {
+  if (!turns_.empty() && in.t > turns_.back().first) {
+    tool_attitude_ = (tool_attitude_ * quaternion_from_rotation_vector((in.w - detector_bg_) * (in.t - turns_.back().first))).normalized();
+  }
+  turns_.emplace_back(in.t, tool_attitude_);
+}
+
+void StillnessWatch::follow_filter(const FilterState& filter, double t) {
+  while (turns_.size() > 1 && turns_[1].first <= t) turns_.pop_front();
+  if (turns_.empty()) return;
+  earth_rate_tool0_ = turns_.front().second * (filter.state().q.conjugate() * filter.mechanization().earth_rate());
+}
+
+void StillnessWatch::refresh_allowances(const FilterState& filter, double t) {
+  follow_filter(filter, t);
   const StateMatrix& p = filter.covariance();
   const double bias_sd = std::sqrt(p.block<3, 3>(kGyroBias, kGyroBias).diagonal().maxCoeff());
   const double att_sd = std::sqrt(p.block<3, 3>(kAtt, kAtt).diagonal().maxCoeff());
@@ -210,6 +233,9 @@ void StillnessWatch::adopt_measured_noise(double dt, ProcessNoise& noise) {
 
 void StillnessWatch::on_aligned(double t) {
   aligned_ = true;
+  tool_attitude_ = Eigen::Quaterniond::Identity();
+  turns_.clear();
+  turns_.emplace_back(t, tool_attitude_);
   refresh_depth_tolerance();
   tally_.clear();
   last_still_t_ = t;

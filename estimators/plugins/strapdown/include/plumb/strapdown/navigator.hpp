@@ -1,5 +1,5 @@
 // The strapdown navigator: the owner that wires its parts, each in its own header: the input
-// checks, the stillness watch, the alignment, the filter state, the stop updates, and the output
+// checks, the stillness watch and its lag, the alignment, the filter state, the stop updates, and the output
 // rows with the optional backward smoother. Plain C++ (no plugin API): the plugin
 // (strapdown_estimator.cpp) and the tests drive it through push/flush.
 #pragma once
@@ -25,6 +25,7 @@
 #include "plumb/strapdown/navigator_config.hpp"
 #include "plumb/strapdown/output_rows.hpp"
 #include "plumb/strapdown/stillness.hpp"
+#include "plumb/strapdown/stillness_lag.hpp"
 #include "plumb/strapdown/stillness_watch.hpp"
 #include "plumb/strapdown/stop_updates.hpp"
 
@@ -68,6 +69,7 @@ class Navigator {
   void reset();
   void count(const char* name, std::uint64_t n = 1) { counters_[name] += n; }
   void process(const Input& in, std::vector<Estimate>& out);
+  void navigate(const Input& in, const StillnessState& still, std::vector<Estimate>& out);
   void before_alignment(const Input& in, std::vector<Estimate>& out);
   void align(const Input& in);
   void epoch(const Input& in, std::vector<Estimate>& out);
@@ -89,6 +91,7 @@ class Navigator {
   FilterState filter_;
   StopUpdates stops_;
   OutputRows rows_;
+  StillnessLag lag_;
 };
 
 }  // namespace plumb::strapdown

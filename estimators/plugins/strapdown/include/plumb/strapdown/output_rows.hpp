@@ -40,8 +40,12 @@ class OutputRows {
   void reset(const NavigatorConfig& config);
   // Every reading that reaches navigation (aligned or not) counts into the next row.
   void add_reading(const InputReading& in);
-  // A gap: the rows up to a period after it say that prediction alone bridged it.
-  void note_gap(double t) { gap_warning_until_ = t + 1.0 / config_.output_rate_hz; }
+  // A gap ending at t: the rows from t to a period after it say that prediction alone bridged it
+  // (rows before it may come later: the filter runs behind the readings, stillness_lag.hpp).
+  void note_gap(double t) {
+    gap_warning_from_ = t;
+    gap_warning_until_ = t + 1.0 / config_.output_rate_hz;
+  }
   // Whether a row is due at t: the first call starts the rows, a period later.
   bool due(double t);
   // Whether a row will be due at t (without starting the rows).
@@ -74,7 +78,7 @@ class OutputRows {
   double next_output_t_ = 0;
   bool output_started_ = false;
   double last_row_t_ = 0;
-  double gap_warning_until_ = -1;
+  double gap_warning_from_ = -1, gap_warning_until_ = -1;
   StillStats row_stats_;  // readings since the last row (totals, dip, rpm)
   Eigen::Vector3d last_b_ = Eigen::Vector3d::Zero();
   bool last_b_valid_ = false;

@@ -5,12 +5,14 @@
 #pragma once
 
 #include <cstddef>
+#include <deque>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "plumb/strapdown/error_state_filter.hpp"
 #include "plumb/strapdown/filter_state.hpp"
@@ -41,9 +43,10 @@ class StillnessWatch {
   // preset (and the log says which noise set the limits); then the detector's long means restart.
   void adopt_measured_noise(double dt, ProcessNoise& noise);
   void on_aligned(double t);
-  // Once aligned, at the filter's epochs (they change with the filter only): what the detector does
-  // not know of w_expected, and the biases it takes out.
-  void refresh_allowances(const FilterState& filter);
+  // Once aligned, at the filter's epochs (they change with the filter only; t: the filter's time,
+  // which may be behind the detector's): what the detector does not know of w_expected, the biases
+  // it takes out, and the attitude it takes the earth rate out with.
+  void refresh_allowances(const FilterState& filter, double t);
   // Aligned: a run without a stop for no_stop_notice_s says so once.
   void watch_for_stops(double t, bool still);
 
@@ -62,6 +65,8 @@ class StillnessWatch {
   StillnessInput aligned_input(const InputReading& in, const FilterState& filter, std::optional<double> b0) const;
   void field_deviation(const InputReading& in, std::optional<double> b0, StillnessInput& si) const;
   void refresh_depth_tolerance();
+  void turn_with(const InputReading& in);
+  void follow_filter(const FilterState& filter, double t);
   void watch_before_alignment(const InputReading& in);
   void adopt_noise_floor();
   bool noise_known() const;
@@ -73,6 +78,12 @@ class StillnessWatch {
   double aligned_gyro_tol_ = 0;  // the detector's extra gyro tolerance once aligned (refresh_allowances)
   // The biases the detector takes out once aligned: the filter's, within 3 sigma of the figures.
   Eigen::Vector3d detector_ba_ = Eigen::Vector3d::Zero(), detector_bg_ = Eigen::Vector3d::Zero();
+  // The tool's attitude since alignment, in a frame of its own (tool0), turned by each aligned
+  // reading, with its history back to the filter's time; the earth rate in tool0 as the filter's
+  // attitude at its time gives it.
+  Eigen::Quaterniond tool_attitude_ = Eigen::Quaterniond::Identity();
+  std::deque<std::pair<double, Eigen::Quaterniond>> turns_;
+  Eigen::Vector3d earth_rate_tool0_ = Eigen::Vector3d::Zero();
   NoiseFloor noise_floor_;
   std::size_t floor_blocks_used_ = 0;
   // Per-sample noise read off the data, for what the user did not state (the magnitude detector).
