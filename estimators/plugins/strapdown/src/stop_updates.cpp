@@ -135,7 +135,9 @@ void StopUpdates::at_epoch(FilterState& filter, const StillnessState& still, dou
     stop_started_t_ = t;
     turned_since_last_stop(filter);
   }
-  if (still.still && t - stop_started_t_ >= config_.pipe_connection_s) {
+  // (The filter runs stop_lag_s behind the stillness detector: a reading still at t is one the
+  // detector saw still until t + stop_lag_s at least.)
+  if (still.still && t + config_.stop_lag_s - stop_started_t_ >= config_.pipe_connection_s) {
     tally_update(filter, counters);
     stop_started_t_ = std::numeric_limits<double>::infinity();  // once per stop
   }
