@@ -172,7 +172,8 @@ TEST(DrillingCompare, EachDepthFamilyFeedsTheNavigatorWhatItSays) {
     EXPECT_TRUE(std::isfinite(r.end_position_coverage) && r.end_position_coverage > 0) << family_name(r.family);
   }
   const double without_depth = runs[1].end_position_percent();
-  EXPECT_GT(without_depth, 2.0);
+  // (1.6 % on this run since the filter runs behind the stillness detector, 7.5 % before.)
+  EXPECT_GT(without_depth, 1.0);
   for (std::size_t k : {0u, 2u, 3u}) EXPECT_LT(runs[k].end_position_percent(), without_depth / 5) << family_name(runs[k].family);
   std::ostringstream table;
   write_drilling_report(table, runs, c);

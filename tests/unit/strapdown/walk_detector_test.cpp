@@ -59,5 +59,22 @@ TEST(WalkDetector, LateralVelocityUpdateCanBeTurnedOff) {
   EXPECT_LT(std::hypot(r.end[0], r.end[1], r.end[2]), 0.003 * 25.0);
 }
 
+// A drilling tool's filter runs stop_lag_s behind its stillness detector and drops stops shorter
+// than that; a foot's stances last a fraction of a second, so a foot's filter does not wait.
+TEST(WalkDetector, AFootsStancesDoNotWaitForTheStopLag) {
+  auto scenario = sim::WalkScenario::loop_25m();
+  scenario.magnetometer = false;
+  const std::vector<Sample> samples = sim::WalkSimulator(scenario).run();
+  estimator::Parameters params{{"latitude_deg", "35"}, {"gravity", "9.80665"}, {"imu_grade", "mems"},
+                               {"min_still_s", "0.05"}, {"initial_azimuth_deg", "0"}, {"align_s", "8"},
+                               {"lateral_velocity_update", "0"}, {"stop_lag_s", "2"}};
+  const Result lag_asked = navigate(samples, params);
+  params["stop_lag_s"] = "0";
+  const Result no_lag = navigate(samples, params);
+  EXPECT_GT(no_lag.counters.at("still_periods"), 15u);
+  EXPECT_EQ(lag_asked.counters.at("still_periods"), no_lag.counters.at("still_periods"));
+  EXPECT_EQ(lag_asked.end, no_lag.end);
+}
+
 }  // namespace
 }  // namespace plumb::strapdown

@@ -125,6 +125,8 @@ void Navigator::align(const Input& in) {
   // 10^4 degrees about it, no magnetized string along it and no rate of penetration.
   const bool drilling_tool = config_.lateral_velocity_update && watch_.mode() == StillnessConfig::Mode::Magnitude;
   filter_.start(coarse->c_bn, coarse->g, config_.latitude, drilling_tool, config_.lever_arm_sd > 0 && drilling_tool);
+  // A drill string speeds up over seconds; a foot's stance lasts a fraction of one, and would vanish.
+  lag_.reset(drilling_tool ? config_.stop_lag_s : 0.0);
   const double dt = checks_.dt_nominal() > 0 ? checks_.dt_nominal() : 0.01;
   watch_.adopt_measured_noise(dt, filter_.noise());
   const double sd_mean_f = mean_force_sd(coarse->stats, filter_.noise().accel_vrw, dt);

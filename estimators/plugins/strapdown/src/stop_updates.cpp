@@ -139,7 +139,8 @@ void StopUpdates::at_epoch(FilterState& filter, const FilterState::Prediction& p
   }
   // (The filter runs stop_lag_s behind the stillness detector: a reading still at t is one the
   // detector saw still until t + stop_lag_s at least.)
-  if (still.still && t + config_.stop_lag_s - stop_started_t_ >= config_.pipe_connection_s) {
+  const double lag = filter.drilling_tool() ? config_.stop_lag_s : 0.0;
+  if (still.still && t + lag - stop_started_t_ >= config_.pipe_connection_s) {
     tally_update(filter, counters);
     stop_started_t_ = std::numeric_limits<double>::infinity();  // once per stop
   }

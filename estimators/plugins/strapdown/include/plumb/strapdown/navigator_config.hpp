@@ -63,8 +63,9 @@ struct NavigatorConfig {
   // a foot, a hand-carried or a vehicle-mounted sensor does not.
   bool lateral_velocity_update = true;
   double nhc_sd = 0.01;                // m/s
-  // The filter runs this far behind the stillness detector, so that a stop that ends gives back the
-  // last stop_lag_s of its zero-velocity updates (stillness_lag.hpp); rows come this much later (s).
+  // A drilling tool's filter runs this far behind the stillness detector, so that a stop that ends
+  // gives back the last stop_lag_s of its zero-velocity updates (stillness_lag.hpp); rows come this
+  // much later (s). A foot or a hand (no tool axis) has none: its stances last a fraction of a second.
   double stop_lag_s = 2;
   double stop_settle_s = 2;            // a drilling tool may creep this long into a confirmed stop (s)
   double rop_sd = 0.02;                // rate of penetration, 1 sigma (m/s): the speed a stop's end may be seen late at
