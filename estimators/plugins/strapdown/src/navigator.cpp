@@ -17,7 +17,7 @@ void Navigator::reset() {
        {"samples", "accepted", "non_finite", "time_backwards", "repeated_time", "no_gyro", "gyro_saturated",
         "accel_saturated", "mag_unusable", "out_of_range", "gaps", "accel_in_g", "still_periods",
         "zero_velocity_updates", "zero_rate_updates", "tilt_updates", "azimuth_updates", "disturbed_field",
-        "lateral_velocity_updates", "axial_acceleration_updates", "depth_updates", "tally_updates", "rows", "invalid_rows"}) {
+        "lateral_velocity_updates", "axial_acceleration_updates", "depth_updates", "tally_updates", "stops_not_connections", "rows", "invalid_rows"}) {
     counters_[name] = 0;
   }
   checks_.reset(config_, counters_);

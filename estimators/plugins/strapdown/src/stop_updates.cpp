@@ -252,6 +252,14 @@ void StopUpdates::tally_update(FilterState& filter, Counters& counters) {
   if (config_.pipe_tally_m.empty() || latest_depth_) return;  // measured depth, when there is one, wins
   if (!config_.pipe_tally_repeats && tally_stops_ >= config_.pipe_tally_m.size()) return;
   const double joint = config_.pipe_tally_m[config_.pipe_tally_repeats ? 0 : tally_stops_];
+  // A long still period inside a slide (a slow start unseen, then a steady speed) looks like a
+  // connection: where the filter is sure (3 sigma) that the tool has not gone half a joint since
+  // the last connection, it is none, and the tally waits for the next.
+  const double moved = filter.state().s - tally_distance_;
+  if (joint > 0 && moved < 0.5 * joint - 3.0 * std::sqrt(filter.covariance()(kDistance, kDistance))) {
+    count(counters, "stops_not_connections");
+    return;
+  }
   ++tally_stops_;
   filter.update(along_hole_distance(filter.state(), tally_distance_ + joint,
                                     config_.pipe_tally_sd * std::sqrt(static_cast<double>(tally_stops_))));
