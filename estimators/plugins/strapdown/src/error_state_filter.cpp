@@ -30,7 +30,9 @@ StateMatrix ErrorStateFilter::dynamics(const StepIntegrals& in, const Eigen::Vec
 }
 
 StateMatrix ErrorStateFilter::transition(const StepIntegrals& in, const Eigen::Vector3d& w_ie) {
-  StateMatrix phi = StateMatrix::Identity();
+  // (Zeros and a diagonal of ones: Eigen writes an identity one coefficient at a time.)
+  StateMatrix phi = StateMatrix::Zero();
+  phi.diagonal().setOnes();
   const double dt = in.dt;
   if (!(dt > 0)) return phi;
   // The non-zero blocks of A = F dt (dynamics()): F's columns 6-8 and 15 are zero and its bias and

@@ -51,6 +51,16 @@ class FilterState {
   void update(const Measurement<M>& m) {
     apply(kf_.update(m.r, m.h, m.noise));
   }
+  // P H' of a measurement, for a caller that weighs its innovation before the update, which then
+  // takes it (the covariance unchanged in between).
+  template <int M>
+  Eigen::Matrix<double, kStates, M> p_ht(const Measurement<M>& m) const {
+    return kf_.p_ht(m.h);
+  }
+  template <int M>
+  void update(const Measurement<M>& m, const Eigen::Matrix<double, kStates, M>& pht) {
+    apply(kf_.update(m.r, m.h, m.noise, pht));
+  }
   void clear_correction() { correction_.setZero(); }
 
   const NavState& state() const { return x_; }
