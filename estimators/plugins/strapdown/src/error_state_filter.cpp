@@ -165,9 +165,7 @@ namespace {
 
 // The states whose rows of phi are not the identity's: attitude, velocity, position, distance.
 constexpr int kMoved = 10;
-// (States 0-8, then the distance: predict() writes their symmetric part by those blocks.)
 constexpr std::array<int, kMoved> kMovedStates = {0, 1, 2, 3, 4, 5, 6, 7, 8, kDistance};
-static_assert(kAtt == 0 && kPos + 3 == 9 && kDistance > 9);
 
 }  // namespace
 
@@ -207,13 +205,9 @@ void ErrorStateFilter::predict(const StateMatrix& phi, double dt, const ProcessN
     moved.col(j) = sum;
   }
   for (int i = 0; i < kMoved; ++i) p_.col(kMovedStates[i]) = m_phi.col(i);
-  // Between the moved states, (moved + moved') / 2: the attitude, velocity and position block, and
-  // the distance's column and row (written before the rows below copy the columns).
-  constexpr int d = kMoved - 1;
-  p_.topLeftCorner<d, d>() = 0.5 * (moved.topLeftCorner<d, d>().transpose() + moved.topLeftCorner<d, d>());
-  p_.col(kDistance).head<d>() = 0.5 * (moved.row(d).head<d>().transpose() + moved.col(d).head<d>());
-  p_.row(kDistance).head<d>() = 0.5 * (moved.col(d).head<d>().transpose() + moved.row(d).head<d>());
-  p_(kDistance, kDistance) = 0.5 * (moved(d, d) + moved(d, d));
+  for (int i = 0; i < kMoved; ++i) {
+    for (int j = 0; j < kMoved; ++j) p_(kMovedStates[j], kMovedStates[i]) = 0.5 * (moved(i, j) + moved(j, i));
+  }
   for (int i = 0; i < kMoved; ++i) p_.row(kMovedStates[i]) = p_.col(kMovedStates[i]).transpose();
   p_.diagonal() += half_q;
 }

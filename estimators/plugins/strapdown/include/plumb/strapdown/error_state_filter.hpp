@@ -131,17 +131,13 @@ class ErrorStateFilter {
     // W = K S / 2 - P H' the change is K W' + W K': symmetric, so one triangle is computed and
     // mirrored (P stays exactly symmetric).
     const Eigen::Matrix<double, kStates, M> w = 0.5 * k.lazyProduct(s) - pht;
-    // The triangle a column at a time, rows 0 to j as one vector (each coefficient the same sum, in
-    // the same order, as one at a time), then mirrored.
-    Eigen::Matrix<double, kStates, 1> d;
     for (int j = 0; j < kStates; ++j) {
-      const int n = j + 1;
-      d.head(n).setZero();
-      for (int m = 0; m < M; ++m) d.head(n) += k.col(m).head(n) * w(j, m) + w.col(m).head(n) * k(j, m);
-      p_.col(j).head(n) += d.head(n);
-    }
-    for (int j = 0; j < kStates; ++j) {
-      for (int i = 0; i < j; ++i) p_(j, i) = p_(i, j);
+      for (int i = 0; i <= j; ++i) {
+        double d = 0;
+        for (int m = 0; m < M; ++m) d += k(i, m) * w(j, m) + w(i, m) * k(j, m);
+        p_(i, j) += d;
+        p_(j, i) = p_(i, j);
+      }
     }
     return k * r;
   }
