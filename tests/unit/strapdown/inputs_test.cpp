@@ -424,6 +424,31 @@ TEST(StrapdownInputs, PipeTallyGivesTheDepthAtEachConnection) {
   EXPECT_THROW(parse_parameters({{"pipe_tally_m", "8"}, {"pipe_joint_m", "8"}}), estimator::ParameterError);
 }
 
+// A long pause just after a connection, which the tally does not list (the string stood 30 s
+// after 1 m of the second joint): counted as a connection it would shift every later joint by
+// one, 8 m. The filter knows it has not gone half a joint since the last connection, so it is none.
+TEST(StrapdownInputs, PipeTallySkipsAPauseTooSoonAfterAConnection) {
+  auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 100, 9);
+  auto& segments = scenario.plan.segments;
+  segments.insert(segments.begin() + 2, {sim::DrillSegment::rotary(1, 0.05, 30, -1, 0), sim::DrillSegment::stop(30)});
+  segments[4].length_m = 7;
+  sim::DrillingSimulator simulator(scenario);
+  std::vector<TruthSample> truth;
+  std::vector<Sample> samples = simulator.run(&truth);
+  for (Sample& s : samples) s.flags &= ~flags::kHasDepth;
+  estimator::Parameters p = parameters_for(scenario);
+  p["pipe_tally_m"] = "8.01,7.98,8.02,7.99";
+  Navigator nav(parse_parameters(p));
+  const std::vector<Estimate> rows = navigate_all(nav, samples);
+  const double err = end_position_error(rows, truth.back());
+  std::printf("a pause 1 m after a connection: end position %.3f m of %.1f m, %d tally updates, %d stops not connections\n",
+              err, simulator.trajectory().drilled_length_m(), static_cast<int>(nav.counters().at("tally_updates")),
+              static_cast<int>(nav.counters().at("stops_not_connections")));
+  EXPECT_EQ(nav.counters().at("tally_updates"), 4u);
+  EXPECT_EQ(nav.counters().at("stops_not_connections"), 1u);
+  EXPECT_LE(err, 0.02 * simulator.trajectory().drilled_length_m());
+}
+
 // Depth reported only while the string stands still (at connections): between them the last report
 // grows old while the tool moves on, and must not hold the position back.
 TEST(StrapdownInputs, DepthOnlyAtConnections) {

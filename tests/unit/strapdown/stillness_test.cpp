@@ -102,5 +102,42 @@ TEST(Stillness, SlowSteadyTurnIsNotStill) {
   EXPECT_LT(static_cast<double>(still_samples), 0.2 * static_cast<double>(total));
 }
 
+// A slide that builds turns a tactical gyro just past its window limit: the windows are not quite
+// quiet, so the period-long means are held, not restarted, and at the stop that follows they still
+// hold the force of the slide's start (0.8 deg of build here: 0.14 m/s^2). The stop must be seen
+// within seconds, not after the 20-40 s those means take to forget (on a simulated tactical run a
+// 60 s pipe connection looked like 19 s and the tally skipped a joint).
+TEST(Stillness, StopAfterABuildingSlideIsSeenWithinSeconds) {
+  StillnessConfig c;
+  c.mode = StillnessConfig::Mode::Magnitude;
+  c.sigma_a = 0.001;
+  c.sigma_w = 2e-5;
+  c.gyro_tol = 5.0 * 3.14159265358979 / 180.0 / 3600.0;
+  StillnessDetector detector(c);
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> n(0.0, 1.0);
+  // 9e-5 rad/s: between one and three times the window's gyro limit, as a tactical gyro read at
+  // 10 Hz sees a build of 3 deg/30 m at 0.05 m/s; the means take 23 s to forget the slide's start.
+  const double build = 9e-5, slide_end = 160, g = 9.81;
+  double first_still = -1;
+  std::size_t still_in_slide = 0;
+  for (double t = 0; t < 240; t += 0.1) {
+    const bool sliding = t < slide_end;
+    const double theta = build * std::min(t, slide_end);
+    StillnessInput in;
+    in.t = t;
+    in.f = Eigen::Vector3d(g * std::sin(theta), 0, -g * std::cos(theta)) +
+           0.001 * Eigen::Vector3d(n(rng), n(rng), n(rng));
+    in.w_minus_expected = Eigen::Vector3d(sliding ? build : 0.0, 0, 0) + 2e-5 * Eigen::Vector3d(n(rng), n(rng), n(rng));
+    in.g = g;
+    const bool still = detector.update(in).still;
+    if (still && sliding) ++still_in_slide;
+    if (still && !sliding && first_still < 0) first_still = t;
+  }
+  EXPECT_EQ(still_in_slide, 0u);
+  ASSERT_GE(first_still, slide_end);
+  EXPECT_LT(first_still - slide_end, 8.0);
+}
+
 }  // namespace
 }  // namespace plumb::strapdown::test

@@ -17,7 +17,7 @@ void Navigator::reset() {
        {"samples", "accepted", "non_finite", "time_backwards", "repeated_time", "no_gyro", "gyro_saturated",
         "accel_saturated", "mag_unusable", "out_of_range", "gaps", "accel_in_g", "still_periods",
         "zero_velocity_updates", "zero_rate_updates", "tilt_updates", "azimuth_updates", "disturbed_field",
-        "lateral_velocity_updates", "depth_updates", "tally_updates", "rows", "invalid_rows"}) {
+        "lateral_velocity_updates", "axial_acceleration_updates", "depth_updates", "tally_updates", "stops_not_connections", "rows", "invalid_rows"}) {
     counters_[name] = 0;
   }
   checks_.reset(config_, counters_);
@@ -130,7 +130,7 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   // The full update of the two-rate mechanization, then the filter at the same instant.
   const FilterState::Prediction prediction = filter_.predict(stops_.process_noise(filter_.noise(), still_state_, filter_.drilling_tool()));
   last_epoch_t_ = in.t;
-  stops_.at_epoch(filter_, still_state_, in.t, checks_.dt_nominal(), watch_.depth_sd(), watch_.depth_tolerance(),
+  stops_.at_epoch(filter_, prediction, still_state_, in.t, checks_.dt_nominal(), watch_.depth_sd(), watch_.depth_tolerance(),
                   aligner_.use_mag(), aligner_.field(), counters_);
   // The minor steps go on from the corrected state.
   filter_.begin_steps();

@@ -19,9 +19,11 @@ void StillnessDetector::reset() {
   depth_min_.clear();
   candidate_ = confirmed_ = false;
   restart_stretch();
+  fresh_until_ = -1e300;
 }
 
 void StillnessDetector::restart_stretch() {
+  stretch_held_ = false;
   stretch_w_.setZero();
   stretch_f_.setZero();
   stretch_n_ = 0;
@@ -208,16 +210,30 @@ StillnessState StillnessDetector::update(const StillnessInput& in) {
   // Only clear motion (a window failing twice the exit thresholds) restarts the long means: a
   // borderline window inside a slow steady turn must not give the turn a fresh start.
   if (!quiet) {
-    if (!enough || !window_quiet(2.0 * config_.hysteresis)) restart_stretch();
-  } else if (stretch_n_ == 0) {
-    for (const Entry& e : window_) {
-      StillnessInput past;
-      past.f = e.f;
-      past.w_minus_expected = e.w;
-      extend_stretch(past);
+    if (!enough || !window_quiet(2.0 * config_.hysteresis)) {
+      restart_stretch();
+    } else if (!stretch_held_ && stretch_n_ > 0) {
+      stretch_held_ = true;
+      held_since_ = in.t;
     }
   } else {
-    extend_stretch(in);
+    const double settle_s = 0.5 * config_.rate_memory_s;
+    if (stretch_held_ && in.t - held_since_ >= settle_s && config_.mode == StillnessConfig::Mode::Magnitude &&
+        !period_quiet(factor, in.extra_gyro_tol)) {
+      restart_stretch();
+      fresh_until_ = in.t + settle_s;
+    }
+    stretch_held_ = false;
+    if (stretch_n_ == 0) {
+      for (const Entry& e : window_) {
+        StillnessInput past;
+        past.f = e.f;
+        past.w_minus_expected = e.w;
+        extend_stretch(past);
+      }
+    } else {
+      extend_stretch(in);
+    }
   }
   const bool steady = quiet && period_quiet(factor, in.extra_gyro_tol);
 
@@ -240,7 +256,7 @@ StillnessState StillnessDetector::update(const StillnessInput& in) {
     candidate_ = true;
     period_start_ = window_.front().t;
   }
-  if (in.t - period_start_ >= config_.min_still_s - 1e-9) {
+  if (in.t - period_start_ >= config_.min_still_s - 1e-9 && in.t >= fresh_until_) {
     confirmed_ = true;
     out.still = out.started = true;
     out.period_start = period_start_;

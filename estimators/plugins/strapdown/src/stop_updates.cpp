@@ -98,6 +98,7 @@ void StopUpdates::at_alignment(FilterState& filter, const StillStats& stats, dou
     magnetic_update(filter, field, counters);
   }
   mag_done_this_period_ = true;
+  velocity_after_updates_ = filter.state().v;
   zaru_stats_.clear();
   mag_stats_.clear();
   zupt_periods_ = 1;
@@ -107,9 +108,9 @@ void StopUpdates::at_alignment(FilterState& filter, const StillStats& stats, dou
   }
 }
 
-void StopUpdates::at_epoch(FilterState& filter, const StillnessState& still, double t, double dt_nominal,
-                           double depth_sd, double depth_tolerance_m, bool use_mag, const FieldReference& field,
-                           Counters& counters) {
+void StopUpdates::at_epoch(FilterState& filter, const FilterState::Prediction& prediction,
+                           const StillnessState& still, double t, double dt_nominal, double depth_sd,
+                           double depth_tolerance_m, bool use_mag, const FieldReference& field, Counters& counters) {
   if (still.still) {
     // A drilling string that slows over seconds looks still to the inertial sensors before it is
     // (depth, when there is some, sees the creep): in the first seconds of such a stop the tool may
@@ -130,6 +131,7 @@ void StopUpdates::at_epoch(FilterState& filter, const StillnessState& still, dou
       stop_settled_ = false;
     }
     if (config_.lateral_velocity_update) lateral_velocity_update(filter, counters);
+    axial_acceleration_update(filter, prediction, counters);
   }
   if (still.started) {
     stop_started_t_ = t;
@@ -140,6 +142,7 @@ void StopUpdates::at_epoch(FilterState& filter, const StillnessState& still, dou
     stop_started_t_ = std::numeric_limits<double>::infinity();  // once per stop
   }
   depth_update(filter, t, dt_nominal, depth_sd, counters);
+  velocity_after_updates_ = filter.state().v;
 }
 
 void StopUpdates::depth_update(FilterState& filter, double t, double dt_nominal, double depth_sd,
@@ -189,6 +192,23 @@ void StopUpdates::lateral_velocity_update(FilterState& filter, Counters& counter
   count(counters, "lateral_velocity_updates");
 }
 
+// Without depth nothing measures the speed along the axis between stops, and near horizontal a
+// tilt error of 0.1 deg is 0.017 m/s^2 of it: the speed and the tilt would drift together, the
+// speed to metres per second within minutes. The string's own acceleration along its axis is small
+// (its rate of penetration changes over seconds), so the mechanization's along-axis acceleration
+// over each epoch is a measurement of the tilt and the axial accelerometer bias. The string's
+// acceleration is taken as correlated over a second (its variance per epoch grows as 1 s / dt),
+// the accelerometers' white noise over the epoch adds to it.
+void StopUpdates::axial_acceleration_update(FilterState& filter, const FilterState::Prediction& prediction,
+                                            Counters& counters) {
+  if (!(config_.axial_accel_sd > 0) || !filter.drilling_tool() || latest_depth_ || !(prediction.dt > 0)) return;
+  const double dt = prediction.dt, vrw = filter.noise().accel_vrw;
+  const double sd = std::sqrt(config_.axial_accel_sd * config_.axial_accel_sd / dt + vrw * vrw / dt);
+  const Eigen::Vector3d axis = filter.state().q.toRotationMatrix().col(2);
+  filter.update(axial_acceleration(axis, filter.state().v - velocity_after_updates_, prediction.phi, dt, sd));
+  count(counters, "axial_acceleration_updates");
+}
+
 // A still period's end is seen late when the string speeds up slowly (its acceleration under the
 // accelerometer noise): the zero-velocity updates held the velocity at zero while the tool already
 // moved along its axis, at up to the rate of penetration. Said to the filter as velocity
@@ -231,6 +251,14 @@ void StopUpdates::tally_update(FilterState& filter, Counters& counters) {
   if (config_.pipe_tally_m.empty() || latest_depth_) return;  // measured depth, when there is one, wins
   if (!config_.pipe_tally_repeats && tally_stops_ >= config_.pipe_tally_m.size()) return;
   const double joint = config_.pipe_tally_m[config_.pipe_tally_repeats ? 0 : tally_stops_];
+  // A long still period inside a slide (a slow start unseen, then a steady speed) looks like a
+  // connection: where the filter is sure (3 sigma) that the tool has not gone half a joint since
+  // the last connection, it is none, and the tally waits for the next.
+  const double moved = filter.state().s - tally_distance_;
+  if (joint > 0 && moved < 0.5 * joint - 3.0 * std::sqrt(filter.covariance()(kDistance, kDistance))) {
+    count(counters, "stops_not_connections");
+    return;
+  }
   ++tally_stops_;
   filter.update(along_hole_distance(filter.state(), tally_distance_ + joint,
                                     config_.pipe_tally_sd * std::sqrt(static_cast<double>(tally_stops_))));

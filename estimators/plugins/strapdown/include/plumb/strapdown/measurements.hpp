@@ -43,6 +43,14 @@ Measurement<1> magnetic_heading(const NavState& x, const Eigen::Vector3d& mean_b
 // Drilling: the tool moves along its own z axis only, so the tool-frame velocity has x = y = 0.
 Measurement<2> lateral_velocity(const NavState& x, double sd_mps);
 
+// Drilling: over a filter epoch of dt the string's acceleration along the tool axis is about zero
+// (the rate of penetration changes slowly). dv: the velocity change the mechanization made over the
+// epoch (no filter correction in it); phi: the epoch's transition, whose velocity rows less the
+// identity are how the error state made dv wrong; axis: the tool axis in the navigation frame.
+// sd: of the epoch's mean acceleration along the axis (the string's and the accelerometers' noise).
+Measurement<1> axial_acceleration(const Eigen::Vector3d& axis, const Eigen::Vector3d& dv, const StateMatrix& phi,
+                                  double dt, double sd);
+
 // Measured depth: the distance travelled along the tool axis since alignment.
 Measurement<1> along_hole_distance(const NavState& x, double measured_distance_m, double sd_m);
 

@@ -65,6 +65,10 @@ struct NavigatorConfig {
   double nhc_sd = 0.01;                // m/s
   double stop_settle_s = 2;            // a drilling tool may creep this long into a confirmed stop (s)
   double rop_sd = 0.02;                // rate of penetration, 1 sigma (m/s): the speed a stop's end may be seen late at
+  // How fast the rate of penetration changes: the string's acceleration along the tool axis over a
+  // second, 1 sigma (m/s^2). Without depth the navigator holds its own along-axis acceleration to it
+  // while the tool moves (0: not).
+  double axial_accel_sd = 0.02;
   double depth_sd = 0.01;              // m
   double depth_interval_s = 1;
   // No depth sensor: a pipe tally. Joint i is run in after stop i (the alignment's stop is stop 0),

@@ -19,6 +19,13 @@
 // The period starts at the oldest sample of the first quiet window and is confirmed once it has
 // lasted min_still; once confirmed, it ends only when a test fails by `hysteresis` times its
 // threshold.
+// Magnitude detector: the long means are held while windows are not quite quiet (a slide that
+// builds turns the gyros just past their limit), so at the stop that follows they still hold the
+// force of the slide's start (0.27 m/s^2 after 2 deg of build) and would keep the stop unseen for
+// their time constants (40 s at 10 s). A quiet window after such a hold that disagrees with the
+// held means starts them afresh when the hold lasted rate_memory_s / 2 (a noisy sensor's windows
+// flicker: short holds are noise, not a slide), and that stop is confirmed only after
+// rate_memory_s / 2.
 #pragma once
 
 #include <algorithm>
@@ -157,6 +164,12 @@ class StillnessDetector {
   Eigen::Vector3d stretch_w_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d stretch_f_ = Eigen::Vector3d::Zero();
   double stretch_n_ = 0;
+  // The stretch is held (neither extended nor restarted) by windows that are not quite quiet, since
+  // held_since_: the tool may have moved on since. A stretch restarted for that is confirmed no
+  // sooner than fresh_until_ (its long tests need time to see a slow turn or a slow start).
+  bool stretch_held_ = false;
+  double held_since_ = 0;
+  double fresh_until_ = -1e300;
   double last_dt_ = 0, last_t_ = 0;
   Eigen::Vector3d window_f_mean_ = Eigen::Vector3d::Zero();
   double window_w_mean_norm_ = 0, window_gyro_allowance_ = 0, window_b_dev_ = 0;

@@ -36,10 +36,12 @@ class StopUpdates {
   // tilt against the accelerometer biases, heading against the gyro biases, as the data warrant).
   void at_alignment(FilterState& filter, const StillStats& stats, double sd_mean_f, double dt, bool use_mag,
                     const FieldReference& field, std::optional<double> depth, Counters& counters);
-  // At a filter epoch t (dt_nominal: the sample interval, 0 when not known yet; depth_sd: the
-  // depth's noise, stated or measured; depth_tolerance_m: the stillness detector's depth limit).
-  void at_epoch(FilterState& filter, const StillnessState& still, double t, double dt_nominal, double depth_sd,
-                double depth_tolerance_m, bool use_mag, const FieldReference& field, Counters& counters);
+  // At a filter epoch t, after the prediction to it (dt_nominal: the sample interval, 0 when not
+  // known yet; depth_sd: the depth's noise, stated or measured; depth_tolerance_m: the stillness
+  // detector's depth limit).
+  void at_epoch(FilterState& filter, const FilterState::Prediction& prediction, const StillnessState& still, double t,
+                double dt_nominal, double depth_sd, double depth_tolerance_m, bool use_mag,
+                const FieldReference& field, Counters& counters);
 
   // The process noise of the next filter epoch: the figures' and, while moving, the lateral
   // velocity's measured excess beyond what a tool's lateral velocity can be.
@@ -58,6 +60,7 @@ class StopUpdates {
   void turned_since_last_stop(FilterState& filter) const;
   void depth_update(FilterState& filter, double t, double dt_nominal, double depth_sd, Counters& counters);
   void lateral_velocity_update(FilterState& filter, Counters& counters);
+  void axial_acceleration_update(FilterState& filter, const FilterState::Prediction& prediction, Counters& counters);
 
   NavigatorConfig config_;
   StillStats zaru_stats_, mag_stats_;
@@ -79,6 +82,8 @@ class StopUpdates {
   // (m^2/s^2, x and y): the tool's real lateral velocity (vibration, whirl, what the lever arm's
   // model leaves), used where it is larger than nhc_sd^2.
   Eigen::Vector2d lateral_excess_ = Eigen::Vector2d::Zero();
+  // The velocity the last epoch's updates left (the next epoch's mechanization starts from it).
+  Eigen::Vector3d velocity_after_updates_ = Eigen::Vector3d::Zero();
   std::string last_field_warning_;
 };
 
