@@ -20,6 +20,37 @@ void StillnessDetector::reset() {
   candidate_ = confirmed_ = false;
   restart_stretch();
   fresh_until_ = -1e300;
+  recent_reports_.clear();
+  recent_sum_ = period_sum_ = period_n_ = 0;
+  last_depth_.reset();
+}
+
+void StillnessDetector::add_depth_report(double t, double depth) {
+  const bool new_report = !last_depth_ || depth != *last_depth_;
+  last_depth_ = depth;
+  if (new_report) {
+    recent_reports_.emplace_back(t, depth);
+    recent_sum_ += depth;
+    period_sum_ += depth;
+    period_n_ += 1;
+  }
+  while (!recent_reports_.empty() && recent_reports_.front().first < t - config_.depth_window_s) {
+    recent_sum_ -= recent_reports_.front().second;
+    recent_reports_.pop_front();
+  }
+  // Outside a period, the period so far is the last depth_window_s.
+  if (!candidate_ && !confirmed_) {
+    period_sum_ = recent_sum_;
+    period_n_ = static_cast<double>(recent_reports_.size());
+  }
+}
+
+bool StillnessDetector::depth_means_steady(double factor) const {
+  const double n_recent = static_cast<double>(recent_reports_.size()), n_before = period_n_ - n_recent;
+  if (!(config_.depth_sd_m > 0) || n_recent < 1 || n_before < 5) return true;
+  const double difference = recent_sum_ / n_recent - (period_sum_ - recent_sum_) / n_before;
+  const double limit = StillnessConfig::kDepthMeanSigmas * config_.depth_sd_m * std::sqrt(1 / n_recent + 1 / n_before);
+  return std::abs(difference) < factor * limit;
 }
 
 void StillnessDetector::restart_stretch() {
@@ -199,8 +230,9 @@ StillnessState StillnessDetector::update(const StillnessInput& in) {
     while (depth_min_.front().first < oldest) depth_min_.pop_front();
     const double range = depth_max_.front().second - depth_min_.front().second;
     last_depth_range_ = range;
-    depth_ok = range < config_.depth_tol_m;
-    depth_ok_exit = range < config_.hysteresis * config_.depth_tol_m;
+    add_depth_report(in.t, d);
+    depth_ok = range < config_.depth_tol_m && depth_means_steady(1.0);
+    depth_ok_exit = range < config_.hysteresis * config_.depth_tol_m && depth_means_steady(config_.hysteresis);
   }
   const bool enough = window_.size() >= StillnessConfig::kMinWindowSamples;
   extra_accel_tol_ = in.extra_accel_tol;

@@ -160,6 +160,7 @@ void StillnessWatch::refresh_depth_tolerance() {
     tol = std::max(config_.still_depth_tol_m, kDepthRangeSigmas * measured_depth_sd_.value_or(0.0));
   }
   detector_.set_depth_tolerance(tol);
+  detector_.set_depth_noise(config_.depth_noise_stated ? config_.depth_sd : measured_depth_sd_.value_or(0.0));
 }
 
 // Before alignment: what the user did not state of the noise is read off the data, and a run that
