@@ -30,7 +30,9 @@ StateMatrix ErrorStateFilter::dynamics(const StepIntegrals& in, const Eigen::Vec
 }
 
 StateMatrix ErrorStateFilter::transition(const StepIntegrals& in, const Eigen::Vector3d& w_ie) {
-  StateMatrix phi = StateMatrix::Identity();
+  // (Zeros and a diagonal of ones: Eigen writes an identity one coefficient at a time.)
+  StateMatrix phi = StateMatrix::Zero();
+  phi.diagonal().setOnes();
   const double dt = in.dt;
   if (!(dt > 0)) return phi;
   // The non-zero blocks of A = F dt (dynamics()): F's columns 6-8 and 15 are zero and its bias and
@@ -178,26 +180,29 @@ void ErrorStateFilter::predict(const StateMatrix& phi, double dt, const ProcessN
   p_.diagonal() += half_q;  // m = P + Q/2
   Eigen::Matrix<double, kMoved, kStates> rows;  // phi's moved rows
   for (int i = 0; i < kMoved; ++i) rows.row(i) = phi.row(kMovedStates[i]);
-  // The non-zero entries (row, column), listed without a branch: the pattern is the same from one
+  // Each moved row's non-zero columns, listed without a branch: the pattern is the same from one
   // epoch to the next, but a branch per entry in the products would be mispredicted often.
-  std::array<std::pair<int, int>, kMoved * kStates> entries;
-  int n_entries = 0;
-  for (int k = 0; k < kStates; ++k) {
-    for (int i = 0; i < kMoved; ++i) {
-      entries[n_entries] = {i, k};
-      n_entries += rows(i, k) != 0.0 ? 1 : 0;
+  std::array<std::array<int, kStates>, kMoved> columns;
+  std::array<int, kMoved> n_columns{};
+  for (int i = 0; i < kMoved; ++i) {
+    for (int k = 0; k < kStates; ++k) {
+      columns[i][n_columns[i]] = k;
+      n_columns[i] += rows(i, k) != 0.0 ? 1 : 0;
     }
   }
-  Eigen::Matrix<double, kStates, kMoved> m_phi = Eigen::Matrix<double, kStates, kMoved>::Zero();  // m phi[moved]'
-  for (int e = 0; e < n_entries; ++e) {
-    const auto [i, k] = entries[e];
-    m_phi.col(i).noalias() += rows(i, k) * p_.col(k);
+  // Each column of a product summed in a local (registers, not memory), its terms in increasing k.
+  Eigen::Matrix<double, kStates, kMoved> m_phi;  // m phi[moved]'
+  for (int i = 0; i < kMoved; ++i) {
+    StateVector sum = StateVector::Zero();
+    for (int c = 0; c < n_columns[i]; ++c) sum.noalias() += rows(i, columns[i][c]) * p_.col(columns[i][c]);
+    m_phi.col(i) = sum;
   }
   const Eigen::Matrix<double, kMoved, kStates> phi_m = m_phi.transpose();
-  Eigen::Matrix<double, kMoved, kMoved> moved = Eigen::Matrix<double, kMoved, kMoved>::Zero();  // phi m phi'
-  for (int e = 0; e < n_entries; ++e) {
-    const auto [j, k] = entries[e];
-    moved.col(j).noalias() += rows(j, k) * phi_m.col(k);
+  Eigen::Matrix<double, kMoved, kMoved> moved;  // phi m phi'
+  for (int j = 0; j < kMoved; ++j) {
+    Eigen::Matrix<double, kMoved, 1> sum = Eigen::Matrix<double, kMoved, 1>::Zero();
+    for (int c = 0; c < n_columns[j]; ++c) sum.noalias() += rows(j, columns[j][c]) * phi_m.col(columns[j][c]);
+    moved.col(j) = sum;
   }
   for (int i = 0; i < kMoved; ++i) p_.col(kMovedStates[i]) = m_phi.col(i);
   for (int i = 0; i < kMoved; ++i) {

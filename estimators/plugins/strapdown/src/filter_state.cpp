@@ -1,6 +1,7 @@
 #include "plumb/strapdown/filter_state.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Geometry>
 
@@ -22,6 +23,7 @@ void FilterState::reset(const NavigatorConfig& config) {
   noise_.accel_bias_walk = config.accel_bias_instability / std::sqrt(config.bias_time_s);
   integrals_.clear();
   correction_.setZero();
+  forget_corrected();
 }
 
 void FilterState::start(const Eigen::Matrix3d& c_bn, double g, double latitude, bool drilling_tool,
@@ -47,10 +49,17 @@ void FilterState::clear_estimates() {
   gyro_spin_.setZero();
   gyro_g_.setZero();
   mag_axial_ = 0;
+  forget_corrected();
 }
 
 ImuReading FilterState::corrected(const InputReading& in, const InputReading* earlier, bool samples_are_means,
                                   double dt_nominal) const {
+  ImuReading r = without_estimates(in, earlier);
+  if (samples_are_means && dt_nominal > 0) r.f = mean_to_instant(r.f, r.w, dt_nominal);
+  return r;
+}
+
+ImuReading FilterState::without_estimates(const InputReading& in, const InputReading* earlier) const {
   ImuReading r{in.t, in.f - ba_, in.w - bg_};
   r.w.z() /= 1.0 + gyro_spin_.z();
   r.w.head<2>() -= gyro_spin_.head<2>() * r.w.z();
@@ -62,8 +71,36 @@ ImuReading FilterState::corrected(const InputReading& in, const InputReading* ea
       r.f.head<2>() -= spin_rate_change * Eigen::Vector2d(-lever_.y(), lever_.x());
     }
   }
-  if (samples_are_means && dt_nominal > 0) r.f = mean_to_instant(r.f, r.w, dt_nominal);
   return r;
+}
+
+bool FilterState::CorrectedReading::holds(const InputReading& in, const InputReading* earlier) const {
+  if (!valid || r.t != in.t) return false;
+  return earlier != nullptr ? earlier_t == earlier->t : std::isnan(earlier_t);
+}
+
+void FilterState::step(const InputReading& prev, const InputReading& in, const InputReading* prev2,
+                       bool samples_are_means, double dt_nominal) {
+  const auto keep = [](CorrectedReading& slot, const ImuReading& r, const InputReading* earlier) {
+    slot.valid = true;
+    slot.earlier_t = earlier != nullptr ? earlier->t : std::numeric_limits<double>::quiet_NaN();
+    slot.r = r;
+  };
+  // The last step's later reading is this one's earlier, when corrected from the same reading
+  // before it (the lever arm's tangential term takes the spin's change from it).
+  ImuReading a = last_b_.holds(prev, prev2) ? last_b_.r : without_estimates(prev, prev2);
+  ImuReading b = without_estimates(in, &prev);
+  // Only the time and the rate of the reading before the step are read, and neither depends on the
+  // reading before it: the last step's earlier reading serves whatever it was corrected from.
+  ImuReading before;
+  if (prev2 != nullptr) before = last_a_.valid && last_a_.r.t == prev2->t ? last_a_.r : without_estimates(*prev2, nullptr);
+  keep(last_a_, a, prev2);
+  keep(last_b_, b, &prev);
+  if (samples_are_means && dt_nominal > 0) {
+    a.f = mean_to_instant(a.f, a.w, dt_nominal);
+    b.f = mean_to_instant(b.f, b.w, dt_nominal);
+  }
+  mech_.step(a, b, prev2 != nullptr ? &before : nullptr);
 }
 
 FilterState::Prediction FilterState::predict(const ProcessNoise& noise) {
@@ -83,6 +120,7 @@ void FilterState::begin_steps() {
 void FilterState::apply(const StateVector& dx) {
   feed_back(dx, x_, bg_, ba_, &lever_, &gyro_spin_, &mag_axial_, &gyro_g_);
   correction_ += dx;
+  forget_corrected();
   g_ -= dx[kGravity];
   mech_.set_gravity(g_);
 }

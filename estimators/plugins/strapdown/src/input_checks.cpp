@@ -75,8 +75,9 @@ InputChecks::Verdict InputChecks::accept(const Sample& s, InputReading& in, Coun
   }
   if ((s.flags & flags::kMagSaturated) != 0 || !s.b.allFinite()) {
     count(counters, "mag_unusable");
-  } else if (s.b.norm() > kNoFieldUT) {
+  } else if (const double b_norm = s.b.norm(); b_norm > kNoFieldUT) {
     in.b = s.b;
+    in.b_norm = b_norm;
   }
   // (No bx,by,bz columns, or a tool without magnetometers.)
   verdict.first_without_field = !last_t_ && !in.b;

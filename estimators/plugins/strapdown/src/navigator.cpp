@@ -76,15 +76,7 @@ void Navigator::process(const Input& in, std::vector<Estimate>& out) {
 
 void Navigator::navigate(const Input& in, const StillnessState& still, std::vector<Estimate>& out) {
   rows_.add_reading(in);
-  const bool means = config_.samples_are_means;
-  const ImuReading a = filter_.corrected(*prev_, prev2_ ? &*prev2_ : nullptr, means, checks_.dt_nominal());
-  const ImuReading b = filter_.corrected(in, &*prev_, means, checks_.dt_nominal());
-  if (prev2_) {
-    const ImuReading before = filter_.corrected(*prev2_, nullptr, means, checks_.dt_nominal());
-    filter_.step(a, b, &before);
-  } else {
-    filter_.step(a, b, nullptr);
-  }
+  filter_.step(*prev_, in, prev2_ ? &*prev2_ : nullptr, config_.samples_are_means, checks_.dt_nominal());
   if (in.depth) stops_.take_depth(in.t, *in.depth, prev_->depth.has_value(), filter_);
   still_state_ = still;
   stops_.follow(in, still_state_, counters_);

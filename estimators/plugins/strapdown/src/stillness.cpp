@@ -111,7 +111,12 @@ void StillnessDetector::measure_window(double g, double extra_gyro_tol) {
   const double n = static_cast<double>(window_.size());
   window_f_mean_ = f_sum_ / n;
   window_w_mean_norm_ = (w_sum_ / n).norm();
-  window_gyro_allowance_ = config_.gyro_tol + extra_gyro_tol + 4.0 * config_.sigma_w / std::sqrt(n);
+  // (The window's size changes only when the readings' spacing does.)
+  if (window_.size() != root_n_of_) {
+    root_n_of_ = window_.size();
+    root_n_ = std::sqrt(n);
+  }
+  window_gyro_allowance_ = config_.gyro_tol + extra_gyro_tol + 4.0 * config_.sigma_w / root_n_;
   window_b_dev_ = b_dev_max_.front().second;
   if (config_.mode == StillnessConfig::Mode::Glrt) {
     // sum |f - g u|^2 over the window, u the direction of the mean force, expanded so that the

@@ -67,7 +67,7 @@ void StillnessWatch::use_glrt_without_field() {
 
 void StillnessWatch::field_deviation(const InputReading& in, std::optional<double> b0, StillnessInput& si) const {
   if (in.b && detector_.config().mode == StillnessConfig::Mode::Magnitude && config_.use_magnetometer && b0) {
-    si.field_deviation_uT = in.b->norm() - *b0;
+    si.field_deviation_uT = in.b_norm - *b0;
   }
 }
 

@@ -183,13 +183,15 @@ void StopUpdates::lateral_velocity_update(FilterState& filter, Counters& counter
   // kLateralVelocityCap; the rest is the velocity's process noise, process_noise()).
   // (A drilling tool's: a foot or a hand keeps the stated sigma.)
   if (filter.drilling_tool()) {
-    const Eigen::Matrix<double, kStates, 2> pht = filter.covariance().lazyProduct(m.h.transpose());
+    const Eigen::Matrix<double, kStates, 2> pht = filter.p_ht(m);
     const Eigen::Vector2d excess = m.r.array().square() - (m.h.lazyProduct(pht)).diagonal().array();
     lateral_excess_ += std::min(1.0, 1.0 / (kLateralMemoryS * config_.kf_rate_hz)) * (excess - lateral_excess_);
     m.noise.diagonal() =
         lateral_excess_.cwiseMax(config_.nhc_sd * config_.nhc_sd).cwiseMin(kLateralVelocityCap * kLateralVelocityCap);
+    filter.update(m, pht);
+  } else {
+    filter.update(m);
   }
-  filter.update(m);
   count(counters, "lateral_velocity_updates");
 }
 

@@ -92,20 +92,34 @@ class ErrorStateFilter {
   // than attitude, velocity, position and distance are the identity's, as transition()'s are.
   void predict(const StateMatrix& phi, double dt, const ProcessNoise& noise);
 
+  // P H' over the states H touches (zero velocity: the velocity's three; lateral velocity:
+  // attitude and velocity): a sum over H's non-zero columns only (the terms left out are exact
+  // zeros).
+  template <int M>
+  Eigen::Matrix<double, kStates, M> p_ht(const Eigen::Matrix<double, M, kStates>& h) const {
+    std::array<int, kStates> touched{};
+    const int n_touched = touched_states(h, touched);
+    Eigen::Matrix<double, kStates, M> pht = Eigen::Matrix<double, kStates, M>::Zero();
+    for (int t = 0; t < n_touched; ++t) pht.noalias() += p_.col(touched[t]) * h.col(touched[t]).transpose();
+    return pht;
+  }
+
   // One measurement: Joseph-form update, P kept symmetric. Returns the error estimate (to feed
   // back); `nis` (if given) receives the normalised innovation squared r' S^-1 r.
   template <int M>
   StateVector update(const Eigen::Matrix<double, M, 1>& r, const Eigen::Matrix<double, M, kStates>& h,
                      const Eigen::Matrix<double, M, M>& noise, double* nis = nullptr) {
-    // H touches a few states (zero velocity: the velocity's three; lateral velocity: attitude and
-    // velocity): P H' and H P H' are sums over H's non-zero columns only (the terms left out are
-    // exact zeros).
+    return update(r, h, noise, p_ht(h), nis);
+  }
+  // The same with P H' as p_ht() gave it (for a caller that tested the innovation against it first;
+  // P has not changed since).
+  template <int M>
+  StateVector update(const Eigen::Matrix<double, M, 1>& r, const Eigen::Matrix<double, M, kStates>& h,
+                     const Eigen::Matrix<double, M, M>& noise, const Eigen::Matrix<double, kStates, M>& pht,
+                     double* nis = nullptr) {
+    // H P H' over H's non-zero columns only, as P H'.
     std::array<int, kStates> touched{};
-    int n_touched = 0;
-    for (int j = 0; j < kStates; ++j)
-      if (!h.col(j).isZero(0.0)) touched[n_touched++] = j;
-    Eigen::Matrix<double, kStates, M> pht = Eigen::Matrix<double, kStates, M>::Zero();
-    for (int t = 0; t < n_touched; ++t) pht.noalias() += p_.col(touched[t]) * h.col(touched[t]).transpose();
+    const int n_touched = touched_states(h, touched);
     Eigen::Matrix<double, M, M> s = noise;
     for (int t = 0; t < n_touched; ++t) s.noalias() += h.col(touched[t]) * pht.row(touched[t]);
     // M <= 3: the closed-form inverse of a small symmetric positive definite matrix.
@@ -133,6 +147,15 @@ class ErrorStateFilter {
   void symmetrize() { p_ = 0.5 * (p_ + p_.transpose()).eval(); }
 
  private:
+  // The states whose columns of h are not zero, in increasing order; returns how many.
+  template <int M>
+  static int touched_states(const Eigen::Matrix<double, M, kStates>& h, std::array<int, kStates>& touched) {
+    int n = 0;
+    for (int j = 0; j < kStates; ++j)
+      if (!h.col(j).isZero(0.0)) touched[n++] = j;
+    return n;
+  }
+
   StateMatrix p_ = StateMatrix::Identity();
 };
 

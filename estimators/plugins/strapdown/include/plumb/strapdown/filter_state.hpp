@@ -32,7 +32,12 @@ class FilterState {
   // (earlier, when there is one) gives.
   ImuReading corrected(const InputReading& in, const InputReading* earlier, bool samples_are_means,
                        double dt_nominal) const;
-  void step(const ImuReading& a, const ImuReading& b, const ImuReading* before) { mech_.step(a, b, before); }
+  // One minor step of the mechanization from reading prev to reading in, with prev2 (if any) the
+  // reading before prev, each as corrected() gives it. A step's later reading is the next step's
+  // earlier one, and the estimates change only when the filter updates them: each reading is
+  // corrected once (the same numbers as correcting it again at every step it takes part in).
+  void step(const InputReading& prev, const InputReading& in, const InputReading* prev2, bool samples_are_means,
+            double dt_nominal);
   // A filter epoch: the mechanization's full update, then the filter's prediction to it with the
   // given process noise. Returns the transition, for the smoother.
   struct Prediction {
@@ -45,6 +50,16 @@ class FilterState {
   template <int M>
   void update(const Measurement<M>& m) {
     apply(kf_.update(m.r, m.h, m.noise));
+  }
+  // P H' of a measurement, for a caller that weighs its innovation before the update, which then
+  // takes it (the covariance unchanged in between).
+  template <int M>
+  Eigen::Matrix<double, kStates, M> p_ht(const Measurement<M>& m) const {
+    return kf_.p_ht(m.h);
+  }
+  template <int M>
+  void update(const Measurement<M>& m, const Eigen::Matrix<double, kStates, M>& pht) {
+    apply(kf_.update(m.r, m.h, m.noise, pht));
   }
   void clear_correction() { correction_.setZero(); }
 
@@ -68,6 +83,18 @@ class FilterState {
   // The sensor errors the filter estimates, back to zero (biases, lever arm, spin response, ...).
   void clear_estimates();
   void apply(const StateVector& dx);
+  // corrected() before the step from the mean over the interval to the value at its instant (which
+  // depends on the nominal interval, and that changes at every reading).
+  ImuReading without_estimates(const InputReading& in, const InputReading* earlier) const;
+  // A reading without_estimates() gave, with what it was corrected from: the reading's time and
+  // that of the reading before it (NaN for none). Estimates that change empty it.
+  struct CorrectedReading {
+    bool valid = false;
+    double earlier_t = 0;
+    ImuReading r;
+    bool holds(const InputReading& in, const InputReading* earlier) const;
+  };
+  void forget_corrected() { last_a_.valid = last_b_.valid = false; }
 
   NavState x_;
   Eigen::Vector3d bg_ = Eigen::Vector3d::Zero(), ba_ = Eigen::Vector3d::Zero();
@@ -86,6 +113,7 @@ class FilterState {
   Mechanization mech_{Eigen::Vector3d::Zero(), 9.80665};
   StepIntegrals integrals_;
   StateVector correction_ = StateVector::Zero();  // fed back since the epoch began (the smoother's)
+  CorrectedReading last_a_, last_b_;  // the last step's readings
 };
 
 }  // namespace plumb::strapdown

@@ -103,7 +103,7 @@ class Mechanization {
   // Starts the minor steps from `state` (the last full update, or the state after a correction).
   void begin(const NavState& state);
   // One minor step from reading a to reading b (b.t > a.t); `before` (optional): the reading
-  // before a, for the parabolic rate interpolation.
+  // before a, for the parabolic rate interpolation (only its time and rate are read).
   void step(const ImuReading& a, const ImuReading& b, const ImuReading* before = nullptr);
   // The full update: the state at the last reading, without starting again.
   NavState state() const;

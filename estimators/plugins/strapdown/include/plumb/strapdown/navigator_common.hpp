@@ -18,6 +18,7 @@ struct InputReading {
   double t = 0;
   Eigen::Vector3d f, w;
   std::optional<Eigen::Vector3d> b;
+  double b_norm = 0;  // |b|, when there is b
   std::optional<double> depth;
   bool gyro_bad = false;  // saturated: the rate is the last good one
   bool accel_bad = false;

@@ -190,6 +190,8 @@ class StillnessDetector {
   double last_dt_ = 0, last_t_ = 0;
   Eigen::Vector3d window_f_mean_ = Eigen::Vector3d::Zero();
   double window_w_mean_norm_ = 0, window_gyro_allowance_ = 0, window_b_dev_ = 0;
+  std::size_t root_n_of_ = 0;  // the window size whose square root root_n_ is
+  double root_n_ = 0;
   double extra_accel_tol_ = 0;  // the last input's
   double last_statistic_ = 0;
   std::optional<double> last_depth_range_;
