@@ -1,5 +1,7 @@
 #include "plumb/strapdown/stillness_lag.hpp"
 
+#include <utility>
+
 namespace plumb::strapdown {
 
 void StillnessLag::reset(double lag_s) {
@@ -40,7 +42,7 @@ std::optional<StillnessLag::Entry> StillnessLag::pop_ready() {
 
 std::optional<StillnessLag::Entry> StillnessLag::pop_any() {
   if (queue_.empty()) return std::nullopt;
-  Entry entry = queue_.front();
+  Entry entry = std::move(queue_.front());
   queue_.pop_front();
   return entry;
 }
