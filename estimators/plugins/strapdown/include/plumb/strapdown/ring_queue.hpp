@@ -20,6 +20,7 @@ class RingQueue {
   T& back() { return buffer_[(head_ + size_ - 1) & mask_]; }
   const T& back() const { return buffer_[(head_ + size_ - 1) & mask_]; }
   const T& operator[](std::size_t i) const { return buffer_[(head_ + i) & mask_]; }
+  T& operator[](std::size_t i) { return buffer_[(head_ + i) & mask_]; }
   void push_back(const T& value) {
     if (size_ == buffer_.size()) grow();
     buffer_[(head_ + size_) & mask_] = value;

@@ -9,10 +9,10 @@
 #pragma once
 
 #include <cstddef>
-#include <deque>
 #include <optional>
 
 #include "plumb/strapdown/navigator_common.hpp"
+#include "plumb/strapdown/ring_queue.hpp"
 #include "plumb/strapdown/stillness.hpp"
 
 namespace plumb::strapdown {
@@ -36,7 +36,7 @@ class StillnessLag {
  private:
   bool take_back(double end_t, bool ended);
 
-  std::deque<Entry> queue_;
+  RingQueue<Entry> queue_;  // (a ring: no allocation per reading once it holds lag_s of them)
   double lag_s_ = 0;
   bool newest_still_ = false;  // the detector's decision at the newest reading pushed
 };

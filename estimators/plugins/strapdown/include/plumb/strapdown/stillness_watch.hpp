@@ -5,7 +5,6 @@
 #pragma once
 
 #include <cstddef>
-#include <deque>
 #include <optional>
 #include <string>
 #include <utility>
@@ -19,6 +18,7 @@
 #include "plumb/strapdown/navigator_common.hpp"
 #include "plumb/strapdown/navigator_config.hpp"
 #include "plumb/strapdown/noise_floor.hpp"
+#include "plumb/strapdown/ring_queue.hpp"
 #include "plumb/strapdown/stillness.hpp"
 
 namespace plumb::strapdown {
@@ -82,7 +82,7 @@ class StillnessWatch {
   // reading, with its history back to the filter's time; the earth rate in tool0 as the filter's
   // attitude at its time gives it.
   Eigen::Quaterniond tool_attitude_ = Eigen::Quaterniond::Identity();
-  std::deque<std::pair<double, Eigen::Quaterniond>> turns_;
+  RingQueue<std::pair<double, Eigen::Quaterniond>> turns_;
   Eigen::Vector3d earth_rate_tool0_ = Eigen::Vector3d::Zero();
   NoiseFloor noise_floor_;
   std::size_t floor_blocks_used_ = 0;
