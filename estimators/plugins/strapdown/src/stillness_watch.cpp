@@ -52,6 +52,7 @@ void StillnessWatch::reset(const NavigatorConfig& config) {
   depth_sd_ = config_.depth_sd;
   refresh_depth_tolerance();
   first_t_.reset();
+  depth_seen_ = false;
   tally_.clear();
   align_notice_given_ = stop_notice_given_ = false;
   last_still_t_ = 0;
@@ -200,6 +201,7 @@ void StillnessWatch::refresh_depth_tolerance() {
 // has not aligned after notice_after_s of data says why, once.
 void StillnessWatch::watch_before_alignment(const InputReading& in) {
   if (!first_t_) first_t_ = in.t;
+  depth_seen_ = depth_seen_ || in.depth.has_value();
   noise_floor_.add(in.t, in.f, in.w, in.depth);
   if (noise_floor_.blocks() != floor_blocks_used_) adopt_noise_floor();
   if (align_notice_given_ || in.t - *first_t_ < config_.notice_after_s) return;

@@ -56,6 +56,8 @@ class StillnessWatch {
   double depth_sd() const { return depth_sd_; }
   // The depth test's limit: the largest 1 s depth change of a tool it calls still (m).
   double depth_tolerance() const { return detector_.config().depth_tol_m; }
+  // Whether any reading before alignment carried a depth report.
+  bool depth_seen() const { return depth_seen_; }
   // The short reason of a row that cannot align, once the notice said the rest; empty before.
   std::string not_aligned_reason() const;
   std::vector<std::string> take_notices() { return std::exchange(notices_, {}); }
@@ -90,6 +92,7 @@ class StillnessWatch {
   std::optional<double> measured_sigma_a_, measured_sigma_w_, measured_depth_sd_;
   double depth_sd_ = 0.01;
   std::optional<double> first_t_;
+  bool depth_seen_ = false;
   StillnessTally tally_;  // what kept the detector from a still period since alignment or the last stop
   bool align_notice_given_ = false, stop_notice_given_ = false;
   double last_still_t_ = 0;
