@@ -70,7 +70,12 @@ void Navigator::process(const Input& in, std::vector<Estimate>& out) {
     before_alignment(in, out);
     return;
   }
-  lag_.push(in, watch_.aligned(in, filter_, aligner_.field().total_uT));
+  const StillnessState decision = watch_.aligned(in, filter_, aligner_.field().total_uT);
+  if (!(lag_.lag_s() > 0)) {
+    navigate(in, decision, out);
+    return;
+  }
+  lag_.push(in, decision);
   while (const std::optional<StillnessLag::Entry> ready = lag_.pop_ready()) navigate(ready->reading, ready->still, out);
 }
 
@@ -127,7 +132,7 @@ void Navigator::align(const Input& in) {
   filter_.reset_covariance(aligner_.initial_covariance(coarse->stats.mean_f(), coarse->heading_sd, sd_mean_f,
                                                        watch_.depth_sd(), filter_.lever_model(), drilling_tool));
   aligned_ = true;
-  watch_.on_aligned(in.t);
+  watch_.on_aligned(in.t, lag_.lag_s() > 0);
   last_epoch_t_ = in.t;
   filter_.clear_correction();
   stops_.at_alignment(filter_, coarse->stats, sd_mean_f, dt, aligner_.use_mag(), aligner_.field(), in.depth,

@@ -96,7 +96,9 @@ StillnessInput StillnessWatch::aligned_input(const InputReading& in, const Filte
   // allow: a filter that has drifted off (no depth, a missed stop) must not blind the detector
   // to the very stops that would bring it back. (refresh_allowances keeps them, once per epoch.)
   si.f = in.f - detector_ba_;
-  si.w_minus_expected = in.w - detector_bg_ - tool_attitude_.conjugate() * earth_rate_tool0_;
+  si.w_minus_expected = in.w - detector_bg_ -
+                        (lagging_ ? Eigen::Vector3d(tool_attitude_.conjugate() * earth_rate_tool0_)
+                                  : filter.mechanization().earth_rate_in_tool());
   si.extra_gyro_tol = aligned_gyro_tol_;
   si.g = filter.gravity();
   field_deviation(in, b0, si);
@@ -121,7 +123,7 @@ StillnessState StillnessWatch::before_alignment(const InputReading& in, std::opt
 }
 
 StillnessState StillnessWatch::aligned(const InputReading& in, const FilterState& filter, std::optional<double> b0) {
-  turn_with(in);
+  if (lagging_) turn_with(in);
   const bool was_still = detector_.still();
   if (in.gyro_bad || in.accel_bad) {
     detector_.reset();
@@ -154,6 +156,7 @@ void StillnessWatch::turn_with(const InputReading& in) {
 }
 
 void StillnessWatch::follow_filter(const FilterState& filter, double t) {
+  if (!lagging_) return;
   while (turns_.size() > 1 && turns_[1].first <= t) turns_.pop_front();
   if (turns_.empty()) return;
   earth_rate_tool0_ = turns_.front().second * (filter.state().q.conjugate() * filter.mechanization().earth_rate());
@@ -244,8 +247,9 @@ void StillnessWatch::adopt_measured_noise(double dt, ProcessNoise& noise) {
   notices_.push_back(text);
 }
 
-void StillnessWatch::on_aligned(double t) {
+void StillnessWatch::on_aligned(double t, bool lagging) {
   aligned_ = true;
+  lagging_ = lagging;
   tool_attitude_ = Eigen::Quaterniond::Identity();
   turns_.clear();
   turns_.emplace_back(t, tool_attitude_);

@@ -42,7 +42,9 @@ class StillnessWatch {
   // At alignment: the filter takes the measured noise where none was stated and it exceeds the
   // preset (and the log says which noise set the limits); then the detector's long means restart.
   void adopt_measured_noise(double dt, ProcessNoise& noise);
-  void on_aligned(double t);
+  // lagging: the filter runs behind the detector (stillness_lag.hpp), which then carries the tool's
+  // attitude forward itself for the earth rate; without a lag the filter's is current.
+  void on_aligned(double t, bool lagging);
   // Once aligned, at the filter's epochs (they change with the filter only; t: the filter's time,
   // which may be behind the detector's): what the detector does not know of w_expected, the biases
   // it takes out, and the attitude it takes the earth rate out with.
@@ -77,6 +79,7 @@ class StillnessWatch {
   NavigatorConfig config_;
   StillnessDetector detector_;
   bool aligned_ = false;
+  bool lagging_ = false;
   double aligned_gyro_tol_ = 0;  // the detector's extra gyro tolerance once aligned (refresh_allowances)
   // The biases the detector takes out once aligned: the filter's, within 3 sigma of the figures.
   Eigen::Vector3d detector_ba_ = Eigen::Vector3d::Zero(), detector_bg_ = Eigen::Vector3d::Zero();
