@@ -88,8 +88,11 @@ on surface timeout 60 "$bin/plumb" topic echo plumb/sensor/raw --security "$(ide
   > "$work/in_denied.txt" 2>&1 &
 in_denied=$!; pids+=($in_denied)
 sleep 2
+# The sim starts once the first secured reader matches; on a loaded machine another reader's
+# handshake can take seconds more (a 6 s run once ended before the monitor's echo matched it):
+# 12 s of sending leaves every reader time to join.
 on tool timeout 60 "$bin/plumb-sim" --security "$(ident plumb-sim)" --tool-id "$marker" --inclination 1 --azimuth 45 --rpm 60 \
-  --duration 12 --snr-accel 40 --snr-mag 40 --rate x2 --reliable --wait-subscribers 30 > "$work/sim.log" 2>&1 &
+  --duration 24 --snr-accel 40 --snr-mag 40 --rate x2 --reliable --wait-subscribers 30 > "$work/sim.log" 2>&1 &
 sim_pid=$!; pids+=($sim_pid)
 # Intruders publishing attitude that a secured reader must not accept (inclination 77, 66, 55).
 on tool timeout 60 "$bin/plumb" topic pub plumb/attitude/compensated inclination_deg=77 azimuth_deg=45 flags=1 estimator=plain \
