@@ -45,7 +45,9 @@ grep -q 'Summary:           yes' "$work/repaired.txt" && grep -q "| Count: $coun
 # record, and half the size alone sometimes falls exactly between two records (seen in CI).
 { head -c $(($(size_of "$work/killed_original.mcap") / 2)) "$work/killed_original.mcap"; printf '\x06'; } > "$work/cut.mcap"
 "$bin/plumb" info "$work/cut.mcap" > "$work/cut.txt" 2> "$work/cut.err"
-grep -qE 'warning: .*cut.mcap: byte [0-9]+: file truncated' "$work/cut.err" &&
+# (Where the cut falls inside a chunk the reader has begun, it may name that chunk's damage instead
+# of the truncation: seen once in CI, "byte 17885: zstd: Data corruption detected: chunk skipped".)
+grep -qE 'warning: .*cut.mcap: byte [0-9]+: (file truncated|.*chunk skipped)' "$work/cut.err" &&
   grep -qE 'Count: [1-9][0-9]* ' "$work/cut.txt" && pass "cut file: $(head -1 "$work/cut.err")" ||
   fail "cut: $(cat "$work/cut.txt" "$work/cut.err")"
 "$bin/plumb" export "$work/cut.mcap" -o "$work/cut.csv" 2> "$work/cut_export.err" && [ "$(grep -c . "$work/cut.csv")" -gt 10 ] &&
