@@ -76,18 +76,22 @@ TEST(Stillness, GlrtFindsShortStancesAt400HzAnd1kHz) {
 
 TEST(Stillness, MagnitudeFindsShortStances) { check_stances(400, StillnessConfig::Mode::Magnitude); }
 
+// The magnitude detector (default window and minimum period) for a sensor of this noise per
+// sample, its gyros quiet within 5 deg/h.
+StillnessConfig magnitude_config(double sigma_a, double sigma_w) {
+  StillnessConfig c;
+  c.mode = StillnessConfig::Mode::Magnitude;
+  c.sigma_a = sigma_a;
+  c.sigma_w = sigma_w;
+  c.gyro_tol = 5.0 * 3.14159265358979 / 180.0 / 3600.0;
+  return c;
+}
+
 // A tool turning slowly and steadily (a sliding build of 8 deg/30 m at 0.05 m/s turns at
 // 2.3e-4 rad/s, below one sample's noise of a MEMS gyro) is not still: the period-long rate test
 // ends the period though every short window looks quiet.
 TEST(Stillness, SlowSteadyTurnIsNotStill) {
-  StillnessConfig c;
-  c.mode = StillnessConfig::Mode::Magnitude;
-  c.window_s = 0.05;
-  c.min_still_s = 0.5;
-  c.sigma_a = 0.01;
-  c.sigma_w = 8.7e-4;
-  c.gyro_tol = 5.0 * 3.14159265358979 / 180.0 / 3600.0;
-  StillnessDetector detector(c);
+  StillnessDetector detector(magnitude_config(0.01, 8.7e-4));
   std::mt19937_64 rng(3);
   std::normal_distribution<double> n(0.0, 1.0);
   std::size_t still_samples = 0, total = 0;
@@ -108,12 +112,7 @@ TEST(Stillness, SlowSteadyTurnIsNotStill) {
 // within seconds, not after the 20-40 s those means take to forget (on a simulated tactical run a
 // 60 s pipe connection looked like 19 s and the tally skipped a joint).
 TEST(Stillness, StopAfterABuildingSlideIsSeenWithinSeconds) {
-  StillnessConfig c;
-  c.mode = StillnessConfig::Mode::Magnitude;
-  c.sigma_a = 0.001;
-  c.sigma_w = 2e-5;
-  c.gyro_tol = 5.0 * 3.14159265358979 / 180.0 / 3600.0;
-  StillnessDetector detector(c);
+  StillnessDetector detector(magnitude_config(0.001, 2e-5));
   std::mt19937_64 rng(5);
   std::normal_distribution<double> n(0.0, 1.0);
   // 9e-5 rad/s: between one and three times the window's gyro limit, as a tactical gyro read at

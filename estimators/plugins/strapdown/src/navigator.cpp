@@ -126,6 +126,7 @@ void Navigator::align(const Input& in) {
   // Measured depth sees a slow start itself (the depth test): no lag, no stop's end taken back
   // (with rig depth the lag cost MEMS 0.41 -> 0.50 deg of worst attitude).
   lag_.reset(drilling_tool && !watch_.depth_seen() ? config_.stop_lag_s : 0.0);
+  stops_.set_stop_lag(lag_.lag_s());
   const double dt = checks_.dt_nominal() > 0 ? checks_.dt_nominal() : 0.01;
   watch_.adopt_measured_noise(dt, filter_.noise());
   const double sd_mean_f = mean_force_sd(coarse->stats, filter_.noise().accel_vrw, dt);

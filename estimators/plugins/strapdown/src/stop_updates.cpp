@@ -43,6 +43,7 @@ void StopUpdates::reset(const NavigatorConfig& config) {
   latest_depth_t_ = last_depth_row_t_ = 0;
   zupt_periods_ = 0;
   tally_stops_ = 0;
+  stop_lag_s_ = 0;
   tally_distance_ = 0;
   stop_settled_ = false;
   last_field_warning_.clear();
@@ -139,8 +140,7 @@ void StopUpdates::at_epoch(FilterState& filter, const FilterState::Prediction& p
   }
   // (The filter runs stop_lag_s behind the stillness detector: a reading still at t is one the
   // detector saw still until t + stop_lag_s at least.)
-  const double lag = filter.drilling_tool() ? config_.stop_lag_s : 0.0;
-  if (still.still && t + lag - stop_started_t_ >= config_.pipe_connection_s) {
+  if (still.still && t + stop_lag_s_ - stop_started_t_ >= config_.pipe_connection_s) {
     tally_update(filter, counters);
     stop_started_t_ = std::numeric_limits<double>::infinity();  // once per stop
   }

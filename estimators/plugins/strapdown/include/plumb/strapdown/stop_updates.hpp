@@ -36,6 +36,8 @@ class StopUpdates {
   // tilt against the accelerometer biases, heading against the gyro biases, as the data warrant).
   void at_alignment(FilterState& filter, const StillStats& stats, double sd_mean_f, double dt, bool use_mag,
                     const FieldReference& field, std::optional<double> depth, Counters& counters);
+  // How far the filter runs behind the stillness detector (stillness_lag.hpp), set at alignment.
+  void set_stop_lag(double lag_s) { stop_lag_s_ = lag_s; }
   // At a filter epoch t, after the prediction to it (dt_nominal: the sample interval, 0 when not
   // known yet; depth_sd: the depth's noise, stated or measured; depth_tolerance_m: the stillness
   // detector's depth limit).
@@ -77,6 +79,7 @@ class StopUpdates {
   std::size_t tally_stops_ = 0;
   double tally_distance_ = 0;
   double stop_started_t_ = 0;
+  double stop_lag_s_ = 0;
   bool stop_settled_ = false;  // the still period in progress has outlasted stop_settle_s
   // Mean square of the lateral-velocity innovations beyond what the filter's covariance explains
   // (m^2/s^2, x and y): the tool's real lateral velocity (vibration, whirl, what the lever arm's
