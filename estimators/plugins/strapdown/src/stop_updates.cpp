@@ -132,7 +132,7 @@ void StopUpdates::at_epoch(FilterState& filter, const FilterState::Prediction& p
       stop_settled_ = false;
     }
     if (config_.lateral_velocity_update) lateral_velocity_update(filter, counters);
-    axial_acceleration_update(filter, prediction, counters);
+    axial_acceleration_update(filter, prediction, t, counters);
   }
   if (still.started) {
     stop_started_t_ = t;
@@ -148,9 +148,14 @@ void StopUpdates::at_epoch(FilterState& filter, const FilterState::Prediction& p
   velocity_after_updates_ = filter.state().v;
 }
 
+bool StopUpdates::depth_reporting(double t) const { return latest_depth_ && t - last_depth_row_t_ <= kHeldDepthAge; }
+
 void StopUpdates::depth_update(FilterState& filter, double t, double dt_nominal, double depth_sd,
                                Counters& counters) {
-  if (!latest_depth_ || !have_depth0_ || t - last_depth_update_t_ < config_.depth_interval_s - 0.5 * dt_nominal) return;
+  // A report older than a held one (a feed that reports only at connections, or one that stopped)
+  // says where the tool was, not where it is: it waits for the next.
+  if (!depth_reporting(t) || !have_depth0_ || t - last_depth_update_t_ < config_.depth_interval_s - 0.5 * dt_nominal)
+    return;
   // A report's age: the time since the last row that carried depth (depth only at connections,
   // or left empty between reports), plus how long a held value had stood then (a 1 Hz report held
   // on every row; at most kHeldDepthAge). A moving tool has gone on by its speed times that age,
@@ -202,9 +207,12 @@ void StopUpdates::lateral_velocity_update(FilterState& filter, Counters& counter
 // over each epoch is a measurement of the tilt and the axial accelerometer bias. The string's
 // acceleration is taken as correlated over a second (its variance per epoch grows as 1 s / dt),
 // the accelerometers' white noise over the epoch adds to it.
-void StopUpdates::axial_acceleration_update(FilterState& filter, const FilterState::Prediction& prediction,
+// While depth reports come (a rig feed held or written once a second) they measure the speed along
+// the axis themselves; a feed that reports only at connections, or one that has stopped, leaves the
+// drilling between them to this update.
+void StopUpdates::axial_acceleration_update(FilterState& filter, const FilterState::Prediction& prediction, double t,
                                             Counters& counters) {
-  if (!(config_.axial_accel_sd > 0) || !filter.drilling_tool() || latest_depth_ || !(prediction.dt > 0)) return;
+  if (!(config_.axial_accel_sd > 0) || !filter.drilling_tool() || depth_reporting(t) || !(prediction.dt > 0)) return;
   const double dt = prediction.dt, vrw = filter.noise().accel_vrw;
   const double sd = std::sqrt(config_.axial_accel_sd * config_.axial_accel_sd / dt + vrw * vrw / dt);
   const Eigen::Vector3d axis = filter.state().q.toRotationMatrix().col(2);

@@ -60,9 +60,12 @@ class StopUpdates {
   void tally_update(FilterState& filter, Counters& counters);
   void late_stop_end(FilterState& filter, double depth_tolerance_m) const;
   void turned_since_last_stop(FilterState& filter) const;
+  // A depth row came within the age of a held report: the feed measures the tool as it goes.
+  bool depth_reporting(double t) const;
   void depth_update(FilterState& filter, double t, double dt_nominal, double depth_sd, Counters& counters);
   void lateral_velocity_update(FilterState& filter, Counters& counters);
-  void axial_acceleration_update(FilterState& filter, const FilterState::Prediction& prediction, Counters& counters);
+  void axial_acceleration_update(FilterState& filter, const FilterState::Prediction& prediction, double t,
+                                 Counters& counters);
 
   NavigatorConfig config_;
   StillStats zaru_stats_, mag_stats_;
