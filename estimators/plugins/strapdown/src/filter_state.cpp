@@ -37,6 +37,7 @@ void FilterState::start(const Eigen::Matrix3d& c_bn, double g, double latitude, 
   drilling_tool_ = drilling_tool;
   lever_model_ = lever_model;
   mech_.set_lever_model(lever_model_);
+  mech_.set_unresolved_vibration(drilling_tool);
   x_ = NavState();
   x_.q = Eigen::Quaterniond(c_bn).normalized();
   clear_estimates();
@@ -107,6 +108,13 @@ FilterState::Prediction FilterState::predict(const ProcessNoise& noise) {
   mech_.finish(x_, &integrals_);
   Prediction p{ErrorStateFilter::transition(integrals_, mech_.earth_rate()), integrals_.dt};
   kf_.predict(p.phi, p.dt, noise);
+  if (integrals_.unresolved_dv2 > 0) {
+    // What the readings could not resolve of a turning tool's vibration: across its axis, half in
+    // each direction (the mechanization gathers it for a drilling tool).
+    const Eigen::Vector3d axis = x_.q.toRotationMatrix().col(2);
+    kf_.covariance().block<3, 3>(kVel, kVel) +=
+        (0.5 * integrals_.unresolved_dv2) * (Eigen::Matrix3d::Identity() - axis * axis.transpose());
+  }
   integrals_.clear();
   correction_.setZero();
   return p;

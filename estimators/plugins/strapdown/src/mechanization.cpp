@@ -71,6 +71,7 @@ void Mechanization::begin(const NavState& state) {
   spin_int_.setZero();
   gyro_g_int_.setZero();
   lever_int_.setZero();
+  unresolved_dv2_ = 0;
   last_lever_.setZero();
   stepped_ = false;
 }
@@ -134,6 +135,7 @@ void Mechanization::step(const ImuReading& a, const ImuReading& b, const ImuRead
   // Velocity: the trapezoid of C~ f (Heun's sum of the specific force); gravity at the full update.
   const Eigen::Vector3d fb = c1.lazyProduct(b.f);
   u_ += 0.5 * dt * (fa + fb);
+  if (unresolved_vibration_) unresolved_dv2_ += unresolved_velocity_variance(turn2, dt, fb - fa, c1.col(2));
   tau_ += dt;
   const Eigen::Vector3d axb = c1.col(2).cross(v_b0_ + u_ + g_b0_ * tau_);
 
@@ -192,6 +194,7 @@ void Mechanization::finish(NavState& state, StepIntegrals* integrals) {
     integrals->spin_frame += c0_ * spin_int_;
     integrals->c_gyro_g += c0_ * gyro_g_int_;
     if (lever_model_) integrals->c_lever += c0_ * lever_int_;
+    integrals->unresolved_dv2 += unresolved_dv2_;
   }
 }
 
