@@ -106,14 +106,14 @@ void FilterState::step(const InputReading& prev, const InputReading& in, const I
 
 FilterState::Prediction FilterState::predict(const ProcessNoise& noise) {
   mech_.finish(x_, &integrals_);
-  Prediction p{ErrorStateFilter::transition(integrals_, mech_.earth_rate()), integrals_.dt};
+  Prediction p{ErrorStateFilter::transition(integrals_, mech_.earth_rate()), integrals_.dt, noise};
   kf_.predict(p.phi, p.dt, noise);
   if (integrals_.unresolved_dv2 > 0) {
     // What the readings could not resolve of a turning tool's vibration: across its axis, half in
     // each direction (the mechanization gathers it for a drilling tool).
     const Eigen::Vector3d axis = x_.q.toRotationMatrix().col(2);
-    kf_.covariance().block<3, 3>(kVel, kVel) +=
-        (0.5 * integrals_.unresolved_dv2) * (Eigen::Matrix3d::Identity() - axis * axis.transpose());
+    p.velocity_noise = (0.5 * integrals_.unresolved_dv2) * (Eigen::Matrix3d::Identity() - axis * axis.transpose());
+    kf_.covariance().block<3, 3>(kVel, kVel) += p.velocity_noise;
   }
   integrals_.clear();
   correction_.setZero();

@@ -219,7 +219,7 @@ void Navigator::flush(std::vector<Estimate>& out) {
     rows_.start_at(*last_t);
     emit(*last_t, out);
   }
-  if (config_.smooth) rows_.flush_smoothed(filter_.noise(), row_context(), out);
+  if (config_.smooth) rows_.flush_smoothed(row_context(), out);
 }
 
 }  // namespace plumb::strapdown

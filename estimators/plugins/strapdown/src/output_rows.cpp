@@ -135,22 +135,22 @@ void OutputRows::emit(double t, const RowContext& context, Counters& counters, s
 }
 
 void OutputRows::store_epoch(const FilterState& filter, const FilterState::Prediction& prediction) {
-  smoother_.store(prediction.phi, prediction.dt, filter.correction(), filter.state(), filter.gyro_bias(),
-                  filter.accel_bias(), filter.covariance());
+  smoother_.store(prediction.phi, prediction.dt, prediction.noise, prediction.velocity_noise, filter.correction(),
+                  filter.state(), filter.gyro_bias(), filter.accel_bias(), filter.covariance());
 }
 
 void OutputRows::store_alignment(const FilterState& filter) {
-  smoother_.store(StateMatrix::Identity(), 0.0, filter.correction(), filter.state(), filter.gyro_bias(),
-                  filter.accel_bias(), filter.covariance());
+  smoother_.store(StateMatrix::Identity(), 0.0, ProcessNoise{}, Eigen::Matrix3d::Zero(), filter.correction(),
+                  filter.state(), filter.gyro_bias(), filter.accel_bias(), filter.covariance());
 }
 
-void OutputRows::flush_smoothed(const ProcessNoise& noise, const RowContext& context, std::vector<Estimate>& out) {
+void OutputRows::flush_smoothed(const RowContext& context, std::vector<Estimate>& out) {
   std::vector<std::optional<SmoothedEpoch>> smoothed(smoother_.size());
   std::vector<bool> wanted(smoother_.size(), false);
   for (const PendingRow& pr : pending_) {
     if (pr.epoch) wanted[*pr.epoch] = true;
   }
-  smoother_.smooth(noise, [&](std::size_t k, const SmoothedEpoch& e) {
+  smoother_.smooth([&](std::size_t k, const SmoothedEpoch& e) {
     if (wanted[k]) smoothed[k] = e;
   });
   for (PendingRow& pr : pending_) {

@@ -2,10 +2,15 @@
 
 namespace plumb::strapdown {
 
-void RtsSmoother::store(const StateMatrix& phi, double dt, const StateVector& correction, const NavState& state,
+void RtsSmoother::store(const StateMatrix& phi, double dt, const ProcessNoise& noise,
+                        const Eigen::Matrix3d& velocity_noise, const StateVector& correction, const NavState& state,
                         const Eigen::Vector3d& gyro_bias, const Eigen::Vector3d& accel_bias, const StateMatrix& p) {
   Epoch e;
   e.dt = dt;
+  e.noise = noise;
+  for (int r = 0, j = 0; r < 3; ++r) {
+    for (int c = r; c < 3; ++c) e.velocity_noise[j++] = velocity_noise(r, c);
+  }
   std::size_t i = 0;
   for (int r = 0; r < kStates; ++r) {
     for (int c = r; c < kStates; ++c) e.p_upper[i++] = p(r, c);
@@ -33,6 +38,18 @@ StateMatrix RtsSmoother::covariance(const Epoch& e) const {
     for (int c = r; c < kStates; ++c) p(r, c) = p(c, r) = e.p_upper[i++];
   }
   return p;
+}
+
+StateMatrix RtsSmoother::predicted(const Epoch& next, const StateMatrix& phi, const StateMatrix& pk) {
+  StateMatrix pred = ErrorStateFilter::predicted_covariance(phi, pk, next.dt, next.noise);
+  for (int r = 0, j = 0; r < 3; ++r) {
+    for (int c = r; c < 3; ++c) {
+      pred(index::kVel + r, index::kVel + c) += next.velocity_noise[j];
+      if (c != r) pred(index::kVel + c, index::kVel + r) += next.velocity_noise[j];
+      ++j;
+    }
+  }
+  return pred;
 }
 
 SmoothedEpoch RtsSmoother::whole(const Epoch& e) const {

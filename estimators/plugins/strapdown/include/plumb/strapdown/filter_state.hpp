@@ -43,6 +43,9 @@ class FilterState {
   struct Prediction {
     StateMatrix phi;
     double dt = 0;
+    ProcessNoise noise;  // the process noise the prediction used
+    // Added to the velocity block beyond that noise: the unresolved vibration of a turning tool.
+    Eigen::Matrix3d velocity_noise = Eigen::Matrix3d::Zero();
   };
   Prediction predict(const ProcessNoise& noise);
   // The minor steps go on from the (corrected) state.

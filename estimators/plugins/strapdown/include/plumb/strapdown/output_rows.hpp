@@ -68,7 +68,7 @@ class OutputRows {
   void store_alignment(const FilterState& filter);
   std::size_t smoother_epochs() const { return smoother_.size(); }
   // End of stream, smoothing: every held row, smoothed where it has an epoch.
-  void flush_smoothed(const ProcessNoise& noise, const RowContext& context, std::vector<Estimate>& out);
+  void flush_smoothed(const RowContext& context, std::vector<Estimate>& out);
 
  private:
   Estimate row(double t, const RowContext& context) const;

@@ -1,15 +1,16 @@
 // Rauch-Tung-Striebel smoother over the closed-loop error-state filter's epochs (offline).
 //
 // Per filter epoch k it keeps: the whole-value state after that epoch's feedback, P(k|k), the
-// transition from epoch k-1 (and its dt: the process noise is recomputed, not stored), and the
-// correction fed back at k. The backward pass:
+// transition from epoch k-1 with its dt and the process noise the filter used (the figures as the
+// lateral velocity's measured excess raised them, and the unresolved vibration's velocity
+// covariance: Q is recomputed from them), and the correction fed back at k. The backward pass:
 //   P(k+1|k) = Phi P(k|k) Phi' + Q,   G = P(k|k) Phi' P(k+1|k)^-1,
 //   dx(k|N) = G (dx(k+1|N) + c(k+1)),  P(k|N) = P(k|k) + G (P(k|N+1) - P(k+1|k)) G',
 // where dx(k|N) is the smoothed error of the stored (post-feedback) state and c(k+1) the
 // correction applied at k+1 (the stored state at k+1 is the prediction minus c(k+1)).
-// Memory: about 3.5 kB per epoch (P upper triangle 136, Phi 256, state 19, correction 16
+// Memory: about 8 kB per epoch (P upper triangle 325, Phi 625, state 19, correction 25, noise 11
 // doubles), independent of the sample rate: a 1-hour run at the default 20 Hz filter rate keeps
-// 72,000 epochs, 250 MB; at 5 Hz, 63 MB (parameter kf_rate_hz).
+// 72,000 epochs, 580 MB; at 5 Hz, 145 MB (parameter kf_rate_hz).
 #pragma once
 
 #include <cstddef>
@@ -34,30 +35,35 @@ class RtsSmoother {
  public:
   void clear() { epochs_.clear(); }
   std::size_t size() const { return epochs_.size(); }
-  // Epoch k: phi and dt of the prediction from epoch k-1 (ignored for the first), the correction
-  // applied at k, the state and covariance after it.
-  void store(const StateMatrix& phi, double dt, const StateVector& correction, const NavState& state,
-             const Eigen::Vector3d& gyro_bias, const Eigen::Vector3d& accel_bias, const StateMatrix& p);
+  // Epoch k: phi, dt and process noise of the prediction from epoch k-1 (ignored for the first),
+  // the correction applied at k, the state and covariance after it.
+  void store(const StateMatrix& phi, double dt, const ProcessNoise& noise, const Eigen::Matrix3d& velocity_noise,
+             const StateVector& correction, const NavState& state, const Eigen::Vector3d& gyro_bias,
+             const Eigen::Vector3d& accel_bias, const StateMatrix& p);
   // Runs the backward pass; calls visit(k, smoothed) from the last epoch to the first.
   template <class Visit>
-  void smooth(const ProcessNoise& noise, Visit&& visit) const;
+  void smooth(Visit&& visit) const;
   std::size_t bytes_per_epoch() const { return sizeof(Epoch); }
 
  private:
   struct Epoch {
     double dt = 0;
+    ProcessNoise noise;
+    double velocity_noise[6];  // upper triangle
     double p_upper[kStates * (kStates + 1) / 2];
     double phi[kStates * kStates];
     double correction[kStates];
     double q[4], v[3], p[3], s = 0, bg[3], ba[3];
   };
   StateMatrix covariance(const Epoch& e) const;
+  // P(k+1|k) as the filter had it.
+  static StateMatrix predicted(const Epoch& next, const StateMatrix& phi, const StateMatrix& pk);
   SmoothedEpoch whole(const Epoch& e) const;
   std::vector<Epoch> epochs_;
 };
 
 template <class Visit>
-void RtsSmoother::smooth(const ProcessNoise& noise, Visit&& visit) const {
+void RtsSmoother::smooth(Visit&& visit) const {
   if (epochs_.empty()) return;
   const std::size_t n = epochs_.size();
   StateVector dx = StateVector::Zero();  // smoothed error of epoch k+1's stored state
@@ -71,7 +77,7 @@ void RtsSmoother::smooth(const ProcessNoise& noise, Visit&& visit) const {
     const Epoch& next = epochs_[k + 1];
     const StateMatrix pk = covariance(epochs_[k]);
     const StateMatrix phi = Eigen::Map<const StateMatrix>(next.phi);
-    const StateMatrix pred = ErrorStateFilter::predicted_covariance(phi, pk, next.dt, noise);
+    const StateMatrix pred = predicted(next, phi, pk);
     // G = P Phi' pred^-1, i.e. G' = pred^-1 Phi P (pred is symmetric positive definite).
     const StateMatrix g = pred.ldlt().solve(phi * pk).transpose();
     const StateVector c = Eigen::Map<const StateVector>(next.correction);
