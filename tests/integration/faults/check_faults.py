@@ -108,9 +108,12 @@ def link(a):
     # Each sensor batch is one frame of about 1.2 kB (10 samples), the only frames of 1000 bytes or more
     # going to the surface; the outage and the loss start and end while the stream flows, so every
     # dropped batch is a gap the host counts. Tolerance: 2 batches, for a discovery or status frame
-    # that grew past 1000 bytes.
-    check(abs(counted - dropped) <= 2 * a.batch,
-          f"samples counted lost by plumb ({counted}) = samples in the frames linkem dropped ({dropped}), within {2 * a.batch}")
+    # that grew past 1000 bytes; beyond the link's drops, also the datagrams the two hosts dropped
+    # themselves (their kernels' UDP buffer errors; a loaded machine, seen once: 26 batches more).
+    beyond = (2 + a.host_drops) * a.batch
+    check(dropped - 2 * a.batch <= counted <= dropped + beyond,
+          f"samples counted lost by plumb ({counted}) = samples in the frames linkem dropped ({dropped}), "
+          f"within {2 * a.batch} below and {beyond} above ({a.host_drops} datagrams dropped by the hosts themselves)")
     check(c.get("source_restarts", 0) == 0 and c.get("seq_backwards", 0) == 0, "no restart seen by the surface host")
 
 
@@ -203,6 +206,7 @@ def main():
     p.add_argument("log")
     p.add_argument("--linkem")
     p.add_argument("--batch", type=int, default=10)
+    p.add_argument("--host-drops", type=int, default=0, help="UDP datagrams the hosts' kernels dropped during the run")
     p.add_argument("--down", type=float)
     p.add_argument("--up", type=float)
     p.add_argument("--loss", type=float)

@@ -69,6 +69,14 @@ pids+=($tool_host)
 sim=$!
 pids+=($sim)
 
+# The kernel's UDP buffer errors in a namespace (RcvbufErrors + SndbufErrors): datagrams a loaded
+# host dropped itself, on neither side of the link.
+udp_buffer_errors() {
+  ip netns exec "$1" awk '/^Udp:/ { if (!h) { for (i = 1; i <= NF; ++i) name[i] = $i; h = 1 }
+    else for (i = 1; i <= NF; ++i) if (name[i] == "RcvbufErrors" || name[i] == "SndbufErrors") n += $i }
+    END { print n + 0 }' /proc/net/snmp
+}
+host_drops_before=$(($(udp_buffer_errors "$tool") + $(udp_buffer_errors "$surface")))
 wait_for "$work/watch.log" "^attitude " 40 || { fail "no attitude across the link"; show_logs; finish; }
 wait_for "$work/watch.log" "^status .* plumb-estimator .*lost_samples" 20 || { fail "no estimator status"; show_logs; finish; }
 sleep 3
@@ -111,7 +119,9 @@ for p in $sim $tool_host $tool_watch; do stop $p; done
 [ $fails -eq $n_fails ] && pass "the tool side stopped on SIGINT with its interface down"
 for p in $surface_host $watch $calibrate $linkem; do stop $p; done
 echo "linkem: $(tr '\n' ' ' < "$work/link.txt")"
+host_drops=$(($(udp_buffer_errors "$tool") + $(udp_buffer_errors "$surface") - host_drops_before))
+echo "UDP buffer errors on the two hosts during the run: $host_drops"
 
-python3 "$here/check_faults.py" link "$work/watch.log" --linkem "$work/link.txt" --batch $batch \
+python3 "$here/check_faults.py" link "$work/watch.log" --linkem "$work/link.txt" --batch $batch --host-drops "$host_drops" \
   --down "$t_down" --up "$t_up" --loss "$t_loss" --loss-end "$t_loss_end" --window-ns 500000000 || { fails=$((fails + 1)); show_logs; }
 finish
