@@ -29,7 +29,21 @@ struct RunMetrics {
   double end_position_pct() const { return drilled_m > 0 ? 100.0 * end_position_err_m / drilled_m : 0.0; }
   double rms_z() const { return n_z > 0 ? std::sqrt(sum_z2 / n_z) : 0.0; }
   double end_position_rms_z() const { return std::sqrt(end_position_z2 / 3); }
+  // Adds another run's attitude (error / sigma)^2: rms_z() is then over both.
+  void pool_z(const RunMetrics& other) {
+    sum_z2 += other.sum_z2;
+    n_z += other.n_z;
+  }
 };
+
+// Three rotary segments of 4 m at 0.03 m/s, each followed by a 60 s stop, instead of the plan's.
+inline void three_rotary_segments(sim::DrillingScenario& s, double rpm) {
+  s.plan.segments.clear();
+  for (int i = 0; i < 3; ++i) {
+    s.plan.segments.push_back(sim::DrillSegment::rotary(4, 0.03, rpm));
+    s.plan.segments.push_back(sim::DrillSegment::stop(60));
+  }
+}
 
 // A scenario's samples and the truth beside them.
 inline std::pair<std::vector<Sample>, std::vector<TruthSample>> simulate(const sim::DrillingScenario& scenario) {

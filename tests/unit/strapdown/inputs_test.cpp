@@ -249,11 +249,7 @@ TEST(StrapdownInputs, VibrationOfATurningToolReadAsTenHertzMeans) {
   for (std::uint64_t seed : {1, 2, 3}) {
     auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 400, seed);
     scenario.vibration.lateral_rms = 4.0;
-    scenario.plan.segments.clear();
-    for (int i = 0; i < 3; ++i) {
-      scenario.plan.segments.push_back(sim::DrillSegment::rotary(4, 0.03, 90));
-      scenario.plan.segments.push_back(sim::DrillSegment::stop(60));
-    }
+    three_rotary_segments(scenario, 90);
     sim::DrillingSimulator simulator(scenario);
     std::vector<TruthSample> truth;
     const std::vector<Sample> fine = simulator.run(&truth);
@@ -278,8 +274,7 @@ TEST(StrapdownInputs, VibrationOfATurningToolReadAsTenHertzMeans) {
                 "RMS(error/sigma) %.2f, end %.2f %% (RMS(error/sigma) %.2f)\n",
                 static_cast<int>(seed), m.max_inc_err_deg, m.max_azi_err_deg, m.max_tf_err_deg, m.rms_z(),
                 m.end_position_pct(), m.end_position_rms_z());
-    sum.sum_z2 += m.sum_z2;
-    sum.n_z += m.n_z;
+    sum.pool_z(m);
     // Without: end 6-10 % of MD, its RMS(error/sigma) up to 2.6, attitude RMS(error/sigma) 1.7-9.4.
     EXPECT_LE(m.end_position_pct(), 1.0);
     EXPECT_LE(m.end_position_rms_z(), 2.0);
@@ -289,8 +284,7 @@ TEST(StrapdownInputs, VibrationOfATurningToolReadAsTenHertzMeans) {
     std::printf("  smoothed: max error I %.3f A %.3f T %.3f deg, RMS(error/sigma) %.2f\n", s.max_inc_err_deg,
                 s.max_azi_err_deg, s.max_tf_err_deg, s.rms_z());
     EXPECT_LE(s.max_attitude_err_deg(), m.max_attitude_err_deg());
-    smoothed.sum_z2 += s.sum_z2;
-    smoothed.n_z += s.n_z;
+    smoothed.pool_z(s);
   }
   EXPECT_LE(sum.rms_z(), 2.0);
   EXPECT_LE(smoothed.rms_z(), 2.0);
@@ -530,11 +524,7 @@ TEST(StrapdownInputs, DepthOnlyAtConnectionsStaysHonestWhileRotating) {
   RunMetrics sum;
   for (std::uint64_t seed : {1, 2, 3, 4}) {
     auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::mems(), 100, seed);
-    scenario.plan.segments.clear();
-    for (int i = 0; i < 3; ++i) {
-      scenario.plan.segments.push_back(sim::DrillSegment::rotary(4, 0.03, 60));
-      scenario.plan.segments.push_back(sim::DrillSegment::stop(60));
-    }
+    three_rotary_segments(scenario, 60);
     sim::DrillingSimulator simulator(scenario);
     std::vector<TruthSample> truth;
     std::vector<Sample> samples = simulator.run(&truth);
@@ -544,8 +534,7 @@ TEST(StrapdownInputs, DepthOnlyAtConnectionsStaysHonestWhileRotating) {
                                         simulator.trajectory().drilled_length_m(), parameters_for(scenario));
     std::printf("seed %d: worst attitude %.3f deg, RMS(error/sigma) %.2f, end %.2f %% (RMS(error/sigma) %.2f)\n",
                 static_cast<int>(seed), m.max_attitude_err_deg(), m.rms_z(), m.end_position_pct(), m.end_position_rms_z());
-    sum.sum_z2 += m.sum_z2;
-    sum.n_z += m.n_z;
+    sum.pool_z(m);
     EXPECT_LE(m.end_position_pct(), 1.0);  // the target with depth
   }
   EXPECT_LE(sum.rms_z(), 1.5);

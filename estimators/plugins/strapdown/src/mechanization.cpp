@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "plumb/strapdown/rotation.hpp"
+
 namespace plumb::strapdown {
 
 namespace {
@@ -12,23 +14,6 @@ namespace {
 constexpr double kGauss1 = 0.5 - std::numbers::sqrt3 / 6.0;
 constexpr double kGauss2 = 0.5 + std::numbers::sqrt3 / 6.0;
 constexpr double kConing = std::numbers::sqrt3 / 12.0;
-
-// The quaternion of a rotation vector: below 0.1 rad by the series of cos(x/2) and sin(x/2)/x to
-// x^8 (the next terms are below 3e-20), which needs no square root, no trigonometry and (the
-// coefficients as reciprocals) no division.
-inline Eigen::Quaterniond rotation_quaternion(const Eigen::Vector3d& phi) {
-  const double t2 = phi.squaredNorm();
-  double c = 0, s = 0;  // cos(|phi|/2), sin(|phi|/2)/|phi|
-  if (t2 < 1e-2) {
-    c = 1.0 - t2 * (1.0 / 8.0) * (1.0 - t2 * (1.0 / 48.0) * (1.0 - t2 * (1.0 / 120.0) * (1.0 - t2 * (1.0 / 224.0))));
-    s = 0.5 * (1.0 - t2 * (1.0 / 24.0) * (1.0 - t2 * (1.0 / 80.0) * (1.0 - t2 * (1.0 / 168.0) * (1.0 - t2 * (1.0 / 288.0)))));
-  } else {
-    const double x = std::sqrt(t2);
-    c = std::cos(0.5 * x);
-    s = std::sin(0.5 * x) / x;
-  }
-  return Eigen::Quaterniond(c, s * phi.x(), s * phi.y(), s * phi.z());
-}
 
 // C~ G(f) (gyro_g_matrix) from C~ f: G(f)'s columns are (f_x, f_y, 0) and e_z x f, and a rotation
 // turns a cross product into the cross product of the turned vectors.
@@ -103,7 +88,7 @@ void Mechanization::step(const ImuReading& a, const ImuReading& b, const ImuRead
   Eigen::Quaterniond d;
   if (turn2 <= kMaxSubstepAngle * kMaxSubstepAngle) {
     const Eigen::Vector3d w1 = rate(kGauss1), w2 = rate(kGauss2);
-    d = rotation_quaternion(0.5 * dt * (w1 + w2) + (kConing * dt * dt) * w1.cross(w2));
+    d = quaternion_from_rotation_vector(0.5 * dt * (w1 + w2) + (kConing * dt * dt) * w1.cross(w2));
   } else {
     const int substeps = std::clamp(static_cast<int>(std::ceil(std::sqrt(turn2) / kMaxSubstepAngle)), 1, 4096);
     const double h = dt / substeps;
@@ -111,13 +96,13 @@ void Mechanization::step(const ImuReading& a, const ImuReading& b, const ImuRead
     for (int i = 0; i < substeps; ++i) {
       const Eigen::Vector3d w1 = rate((i + kGauss1) / substeps);
       const Eigen::Vector3d w2 = rate((i + kGauss2) / substeps);
-      d = d * rotation_quaternion(0.5 * h * (w1 + w2) + (kConing * h * h) * w1.cross(w2));
+      d = d * quaternion_from_rotation_vector(0.5 * h * (w1 + w2) + (kConing * h * h) * w1.cross(w2));
     }
   }
   // The earth's turn of b0 over dt, kept while the steps are alike (it changes only with dt and b0).
   if (dt != earth_dt_) {
     earth_dt_ = dt;
-    earth_turn_ = rotation_quaternion(-dt * w_b0_);
+    earth_turn_ = quaternion_from_rotation_vector(-dt * w_b0_);
   }
   b_ = earth_turn_ * b_ * d;
   const Eigen::Matrix3d c1 = b_.toRotationMatrix();

@@ -140,16 +140,7 @@ StillnessState StillnessWatch::aligned(const InputReading& in, const FilterState
 // horizontal part; the biases and allowances below change slowly, and the filter's lagging ones do.)
 void StillnessWatch::turn_with(const InputReading& in) {
   if (!turns_.empty() && in.t > turns_.back().first) {
-    const Eigen::Vector3d r = (in.w - detector_bg_) * (in.t - turns_.back().first);
-    const double a2 = r.squaredNorm();
-    // Below a radian, a step's quaternion by its series (its error 5e-5 rad at a radian, 1e-10 at a
-    // tenth), without trigonometry on every reading.
-    if (a2 < 1.0) {
-      const Eigen::Vector3d v = (0.5 - a2 / 48.0 + a2 * a2 / 3840.0) * r;
-      tool_attitude_ *= Eigen::Quaterniond(1.0 - a2 / 8.0 + a2 * a2 / 384.0, v.x(), v.y(), v.z());
-    } else {
-      tool_attitude_ *= quaternion_from_rotation_vector(r);
-    }
+    tool_attitude_ *= quaternion_from_rotation_vector((in.w - detector_bg_) * (in.t - turns_.back().first));
     tool_attitude_.normalize();
   }
   turns_.emplace_back(in.t, tool_attitude_);
