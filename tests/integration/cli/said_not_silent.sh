@@ -60,6 +60,9 @@ expect_failure "estimate on a recording without messages" "no sensor message on 
 # --- A recording made while only plumb-sim runs: raw is read, and said.
 timeout 60 "$bin/plumb-sim" --inclination 2 --azimuth 45 --rpm 60 --loop --wait-subscribers 0 --transport fastdds > "$work/sim.log" 2>&1 &
 pids+=($!)
+# The recorder starts once the simulator's writer exists: on a loaded machine a Fast DDS participant
+# took longer to start than a 4 s recording lasted (seen once on CI).
+wait_for "$work/sim.log" "plumb-sim: simulating" 30 || fail "plumb-sim did not start: $(cat "$work/sim.log")"
 timeout 30 "$bin/plumb" record -o "$work/run.mcap" --duration 4 --transport cyclonedds > /dev/null 2> "$work/rec.err" ||
   fail "record beside plumb-sim: $(cat "$work/rec.err")"
 "$bin/plumb" export "$work/run.mcap" -o "$work/run.csv" 2> "$work/export.err" && [ "$(grep -vc '^#' "$work/run.csv")" -gt 100 ] &&
