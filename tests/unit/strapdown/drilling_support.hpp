@@ -29,6 +29,8 @@ struct RunMetrics {
   double end_position_pct() const { return drilled_m > 0 ? 100.0 * end_position_err_m / drilled_m : 0.0; }
   double rms_z() const { return n_z > 0 ? std::sqrt(sum_z2 / n_z) : 0.0; }
   double end_position_rms_z() const { return std::sqrt(end_position_z2 / 3); }
+  // Of one angle: 0 inclination, 1 azimuth, 2 toolface.
+  double rms_z_angle(int k) const { return n_z_angle[k] > 0 ? std::sqrt(sum_z2_angle[k] / n_z_angle[k]) : 0.0; }
   // Adds another run's attitude (error / sigma)^2: rms_z() is then over both.
   void pool_z(const RunMetrics& other) {
     sum_z2 += other.sum_z2;
@@ -43,6 +45,27 @@ inline void three_rotary_segments(sim::DrillingScenario& s, double rpm) {
     s.plan.segments.push_back(sim::DrillSegment::rotary(4, 0.03, rpm));
     s.plan.segments.push_back(sim::DrillSegment::stop(60));
   }
+}
+
+// Readings as an integrating sensor reports them: the mean of every `per_reading` samples, stamped
+// at the middle (flags and depth as the last sample had them).
+inline std::vector<Sample> read_as_means(const std::vector<Sample>& fine, std::size_t per_reading) {
+  std::vector<Sample> means;
+  for (std::size_t k = 0; k + per_reading <= fine.size(); k += per_reading) {
+    Sample m = fine[k + per_reading - 1];
+    m.t = 0;
+    m.f.setZero();
+    m.w.setZero();
+    m.b.setZero();
+    for (std::size_t j = 0; j < per_reading; ++j) {
+      m.t += fine[k + j].t / static_cast<double>(per_reading);
+      m.f += fine[k + j].f / static_cast<double>(per_reading);
+      m.w += fine[k + j].w / static_cast<double>(per_reading);
+      m.b += fine[k + j].b / static_cast<double>(per_reading);
+    }
+    means.push_back(m);
+  }
+  return means;
 }
 
 // A scenario's samples and the truth beside them.
@@ -149,10 +172,10 @@ inline RunMetrics run_drilling(const sim::ImuGrade& grade, double rate_hz, std::
 }
 
 inline void print(const char* label, const RunMetrics& m) {
-  auto rms = [&](int a) { return m.n_z_angle[a] > 0 ? std::sqrt(m.sum_z2_angle[a] / m.n_z_angle[a]) : 0.0; };
   std::printf("%-28s rows %zu/%zu  max err I %.3f A %.3f T %.3f deg  end pos %.3f m (%.2f %% of %.1f m)  RMS(z) %.2f (I %.2f A %.2f T %.2f)\n",
               label, m.valid_rows, m.rows, m.max_inc_err_deg, m.max_azi_err_deg, m.max_tf_err_deg,
-              m.end_position_err_m, m.end_position_pct(), m.drilled_m, m.rms_z(), rms(0), rms(1), rms(2));
+              m.end_position_err_m, m.end_position_pct(), m.drilled_m, m.rms_z(), m.rms_z_angle(0), m.rms_z_angle(1),
+              m.rms_z_angle(2));
 }
 
 }  // namespace plumb::strapdown::test

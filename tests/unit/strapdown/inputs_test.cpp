@@ -3,6 +3,7 @@
 // report), and runs that cannot align, which must say why instead of waiting in silence.
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -252,21 +253,7 @@ TEST(StrapdownInputs, VibrationOfATurningToolReadAsTenHertzMeans) {
     three_rotary_segments(scenario, 90);
     sim::DrillingSimulator simulator(scenario);
     std::vector<TruthSample> truth;
-    const std::vector<Sample> fine = simulator.run(&truth);
-    std::vector<Sample> means;
-    for (std::size_t k = 0; k + kPerReading <= fine.size(); k += kPerReading) {
-      Sample m = fine[k + kPerReading - 1];  // flags and the depth as the last reading had them
-      m.t = m.f.x() = m.f.y() = m.f.z() = 0;
-      m.w.setZero();
-      m.b.setZero();
-      for (int j = 0; j < kPerReading; ++j) {
-        m.t += fine[k + j].t / kPerReading;
-        m.f += fine[k + j].f / kPerReading;
-        m.w += fine[k + j].w / kPerReading;
-        m.b += fine[k + j].b / kPerReading;
-      }
-      means.push_back(m);
-    }
+    const std::vector<Sample> means = read_as_means(simulator.run(&truth), kPerReading);
     estimator::Parameters p = parameters_for(scenario);
     p["imu_samples"] = "mean";
     const RunMetrics m = score_drilling(means, truth, 400, simulator.trajectory().drilled_length_m(), p);
@@ -288,6 +275,64 @@ TEST(StrapdownInputs, VibrationOfATurningToolReadAsTenHertzMeans) {
   }
   EXPECT_LE(sum.rms_z(), 2.0);
   EXPECT_LE(smoothed.rms_z(), 2.0);
+}
+
+// Broadband vibration, as a bit makes it (the simulator's is a few tones near 15 Hz): 64 tones
+// spread over 8-40 Hz with random phases, `rms` (m/s^2) on each lateral axis, scaled by the speed
+// so that it fades with the ramps and vanishes at the stops.
+void add_broadband_vibration(std::vector<Sample>& samples, const std::vector<TruthSample>& truth, double rms,
+                             double cruise_mps, std::uint64_t seed) {
+  constexpr int kTones = 64;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double freq[2][kTones], phase[2][kTones];
+  for (auto& axis : freq)
+    for (double& f : axis) f = 8.0 + 32.0 * unit(rng);
+  for (auto& axis : phase)
+    for (double& p : axis) p = 2.0 * std::numbers::pi * unit(rng);
+  const double amplitude = rms * std::sqrt(2.0 / kTones);
+  for (std::size_t i = 0; i < samples.size() && i < truth.size(); ++i) {
+    const double drive = std::min(1.0, std::hypot(truth[i].vn_mps, truth[i].ve_mps, truth[i].vd_mps) / cruise_mps);
+    if (!(drive > 0)) continue;
+    for (int axis = 0; axis < 2; ++axis)
+      for (int k = 0; k < kTones; ++k)
+        samples[i].f[axis] += drive * amplitude * std::sin(2.0 * std::numbers::pi * freq[axis][k] * samples[i].t + phase[axis][k]);
+  }
+}
+
+// Broadband lateral vibration of 0.3 g on a tool inclined at 45 deg, turning at 60 rpm, read as
+// 10 Hz means, the string's magnetization modelled as a user states it (0.3 uT). The tool's
+// velocity across its axis is then mostly the vibration's own: a lateral-velocity constraint whose
+// attitude column took that velocity read the attitude off the vibration (quadratic in it), and the
+// axial-bias estimate moved with the azimuth so that the stops' magnetic heading still agreed.
+// Without the change: the azimuth 0.23-0.97 deg off, its RMS(error/sigma) 1.9-4.2 (on a run from
+// the outside generator, 2.2 deg and 5.6).
+TEST(StrapdownInputs, BroadbandVibrationOfAnInclinedTurningToolLeavesTheAzimuth) {
+  constexpr int kPerReading = 40;  // simulated at 400 Hz
+  RunMetrics pooled;
+  for (std::uint64_t seed : {1, 2, 3}) {
+    auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 400, seed);
+    scenario.plan.inclination_deg = 45;
+    three_rotary_segments(scenario, 60);
+    sim::DrillingSimulator simulator(scenario);
+    std::vector<TruthSample> truth;
+    std::vector<Sample> fine = simulator.run(&truth);
+    add_broadband_vibration(fine, truth, 3.0, 0.03, seed);
+    const std::vector<Sample> means = read_as_means(fine, kPerReading);
+    estimator::Parameters p = parameters_for(scenario);
+    p["imu_samples"] = "mean";
+    p["mag_axial_bias_uT"] = "0.3";
+    const RunMetrics m = score_drilling(means, truth, 400, simulator.trajectory().drilled_length_m(), p);
+    std::printf("I 45 deg, 0.3 g of 8-40 Hz read as 10 Hz means, 60 rpm, seed %d: max error I %.3f A %.3f T %.3f deg, "
+                "azimuth RMS(error/sigma) %.2f, end %.2f %% (RMS(error/sigma) %.2f)\n",
+                static_cast<int>(seed), m.max_inc_err_deg, m.max_azi_err_deg, m.max_tf_err_deg, m.rms_z_angle(1),
+                m.end_position_pct(), m.end_position_rms_z());
+    EXPECT_LE(m.max_azi_err_deg, 0.3);
+    EXPECT_LE(m.rms_z_angle(1), 1.5);
+    pooled.pool_z(m);
+  }
+  // (The toolface of a turning tool read at 10 Hz is what keeps this above 1.5, as in the test above.)
+  EXPECT_LE(pooled.rms_z(), 2.0);
 }
 
 // A z gyro that reads 400 ppm too much: each 30 rpm rotary segment of 160 s turns the tool
@@ -398,8 +443,7 @@ TEST(StrapdownInputs, AccelerometerTriadErrorsAfterTheToolTurned) {
     std::printf("accelerometer triad 2000 ppm, 1 mrad, modelled %s: max error I %.3f A %.3f T %.3f deg, RMS(error/sigma) "
                 "%.2f (I %.2f A %.2f T %.2f)\n",
                 model ? "yes" : "no ", m.max_inc_err_deg, m.max_azi_err_deg, m.max_tf_err_deg, m.rms_z(),
-                std::sqrt(m.sum_z2_angle[0] / m.n_z_angle[0]), std::sqrt(m.sum_z2_angle[1] / m.n_z_angle[1]),
-                std::sqrt(m.sum_z2_angle[2] / m.n_z_angle[2]));
+                m.rms_z_angle(0), m.rms_z_angle(1), m.rms_z_angle(2));
   }
   // Not all of it: the toolface's RMS(error/sigma) is still about 5 with the model (30 without);
   // the triad's error while the tool turns is not modelled yet.

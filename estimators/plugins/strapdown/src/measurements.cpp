@@ -72,12 +72,19 @@ Measurement<1> magnetic_heading(const NavState& x, const Eigen::Vector3d& mean_b
 }
 
 // C_n^b(est) v(est) = C_n^b v + C_n^b [v x] phi + C_n^b dv to first order.
-Measurement<2> lateral_velocity(const NavState& x, double sd_mps) {
+Measurement<2> lateral_velocity(const NavState& x, double sd_mps, bool drilling_string) {
   Measurement<2> m;
   const Eigen::Matrix3d c_nb = x.q.toRotationMatrix().transpose();
   const Eigen::Vector3d v_b = c_nb * x.v;
   m.r = v_b.head<2>();
-  m.h.block<2, 3>(0, kAtt) = (c_nb * skew(x.v)).topRows<2>();
+  if (drilling_string) {
+    // C_n^b [(s e_z^n) x] = s [e_z x] C_n^b, s the speed along the axis: its top rows are
+    // s (-row y, row x) of C_n^b.
+    m.h.block<1, 3>(0, kAtt) = -v_b.z() * c_nb.row(1);
+    m.h.block<1, 3>(1, kAtt) = v_b.z() * c_nb.row(0);
+  } else {
+    m.h.block<2, 3>(0, kAtt) = (c_nb * skew(x.v)).topRows<2>();
+  }
   m.h.block<2, 3>(0, kVel) = c_nb.topRows<2>();
   set_noise(m, sd_mps);
   return m;

@@ -182,7 +182,7 @@ ProcessNoise StopUpdates::process_noise(const ProcessNoise& base, const Stillnes
 }
 
 void StopUpdates::lateral_velocity_update(FilterState& filter, Counters& counters) {
-  Measurement<2> m = lateral_velocity(filter.state(), config_.nhc_sd);
+  Measurement<2> m = lateral_velocity(filter.state(), config_.nhc_sd, filter.drilling_tool());
   // Covariance matching over the last kLateralMemoryS of motion: the innovations' mean square
   // beyond what the covariance explains is the tool's real lateral velocity (up to
   // kLateralVelocityCap; the rest is the velocity's process noise, process_noise()).

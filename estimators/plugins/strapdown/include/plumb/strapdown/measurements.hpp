@@ -41,7 +41,12 @@ Measurement<1> magnetic_heading(const NavState& x, const Eigen::Vector3d& mean_b
                                 double sd_heading);
 
 // Drilling: the tool moves along its own z axis only, so the tool-frame velocity has x = y = 0.
-Measurement<2> lateral_velocity(const NavState& x, double sd_mps);
+// For a drilling string (drilling_string = true) the constraint is on the string's advance, which
+// is along the axis; what the velocity holds across the axis is vibration (real, zero-mean,
+// centimetres per second) and error. So the attitude's column comes from the speed along the axis
+// alone: with the whole velocity the constraint read the attitude off the vibration's own velocity
+// (quadratic in it), which rectified into an azimuth drift of a turning tool read at 10 Hz.
+Measurement<2> lateral_velocity(const NavState& x, double sd_mps, bool drilling_string = false);
 
 // Drilling: over a filter epoch of dt the string's acceleration along the tool axis is about zero
 // (the rate of penetration changes slowly). dv: the velocity change the mechanization made over the
