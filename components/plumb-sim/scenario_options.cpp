@@ -89,6 +89,10 @@ void add_scenario_options(CLI::App& app, ScenarioOptions& o) {
   app.add_option("--gyro-scale", o.gyro_scale, "gyro relative scale error X,Y,Z");
   app.add_option("--vibration", o.vibration_rms, "lateral vibration rms on x and y, m/s^2 (drilling: while drilling only)");
   app.add_option("--vibration-hz", o.vibration_hz, "vibration centre frequency, Hz")->capture_default_str();
+  app.add_option("--vibration-band", o.vibration_band,
+                 "vibration bandwidth about the centre frequency, Hz: 64 tones spread across it, as a bit's broadband "
+                 "excitation (--vibration-hz 24 --vibration-band 32: 8-40 Hz); default 0: four tones within 25 % of the "
+                 "centre");
   app.add_option("--shock-rate", o.shock_rate, "mean rate of lateral half-sine shocks, 1/s");
   app.add_option("--shock-peak", o.shock_peak, "shock peak, m/s^2");
   app.add_option("--temp", o.temp, "temperature, degC: T (constant) or START:END (linear over the duration)");
@@ -170,6 +174,7 @@ sim::Scenario make_scenario(const CLI::App& app, const ScenarioOptions& o) {
   set_triple(app, "--gyro-scale", o.gyro_scale, s.gyro_errors.scale);
   s.vibration.lateral_rms = o.vibration_rms;
   s.vibration.frequency_hz = o.vibration_hz;
+  s.vibration.band_hz = o.vibration_band;
   s.vibration.shock_rate_hz = o.shock_rate;
   s.vibration.shock_peak = o.shock_peak;
   if (given(app, "--temp")) {
@@ -233,6 +238,7 @@ sim::DrillingScenario make_drilling_scenario(const CLI::App& app, const Scenario
   if (given(app, "--depth-step")) s.depth.quantum_m = o.depth_step;
   s.vibration.lateral_rms = o.vibration_rms;
   s.vibration.frequency_hz = o.vibration_hz;
+  s.vibration.band_hz = o.vibration_band;
   s.vibration.shock_rate_hz = o.shock_rate;
   s.vibration.shock_peak = o.shock_peak;
   require(s.tool_id.size() <= 31, "--tool-id: at most 31 characters");

@@ -27,7 +27,7 @@ struct ScenarioOptions {
   double snr_accel = 20, snr_mag = 20;
   double sigma_accel = 0, sigma_mag = 0, sigma_gyro = 0;
   std::string accel_bias, accel_scale, accel_bias_temp, mag_bias, mag_scale, mag_bias_temp, gyro_bias, gyro_scale;
-  double vibration_rms = 0, vibration_hz = 15, shock_rate = 0, shock_peak = 0;
+  double vibration_rms = 0, vibration_hz = 15, vibration_band = 0, shock_rate = 0, shock_peak = 0;
   std::string temp;
   unsigned long long seed = 1;
   std::string tool_id = "sim";

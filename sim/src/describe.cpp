@@ -39,7 +39,7 @@ std::string describe(const Scenario& s) {
       << " uT, dip " << s.dip_deg << " deg; " << s.sample_rate_hz << " Hz, " << s.duration_s << " s; noise sigma "
       << s.sigma_accel() << " m/s2, " << s.sigma_mag() << " uT";
   if (s.with_gyro) out << ", " << s.noise.sigma_gyro << " rad/s";
-  if (s.vibration.lateral_rms > 0) out << "; vibration " << s.vibration.lateral_rms << " m/s2 rms at " << s.vibration.frequency_hz << " Hz";
+  if (s.vibration.lateral_rms > 0) out << "; vibration " << describe(s.vibration);
   if (s.vibration.shock_rate_hz > 0 && s.vibration.shock_peak != 0)
     out << "; shocks " << s.vibration.shock_peak << " m/s2 at " << s.vibration.shock_rate_hz << " /s";
   if (any(s.accel_errors) || any(s.mag_errors) || any(s.gyro_errors)) out << "; sensor errors on";

@@ -31,7 +31,7 @@ std::string describe(const DrillingScenario& s) {
   else
     out << "no depth; ";
   if (s.vibration.lateral_rms > 0)
-    out << "vibration " << s.vibration.lateral_rms << " m/s2 rms at " << s.vibration.frequency_hz << " Hz; ";
+    out << "vibration " << describe(s.vibration) << "; ";
   if (s.vibration.shock_rate_hz > 0 && s.vibration.shock_peak != 0)
     out << "shocks " << s.vibration.shock_peak << " m/s2 at " << s.vibration.shock_rate_hz << " /s; ";
   out << "seed " << s.seed;

@@ -84,8 +84,8 @@ void validate(const DrillingScenario& s, std::size_t stop_count) {
   }
   require(finite_nonneg(s.depth.sigma_m) && finite_nonneg(s.depth.quantum_m), "depth noise and quantum must be >= 0 m");
   const auto& v = s.vibration;
-  require(finite_nonneg(v.lateral_rms), "vibration rms must be >= 0");
-  require(std::isfinite(v.frequency_hz) && v.frequency_hz > 0, "vibration frequency must be > 0 Hz");
+  const std::string vibration = vibration_problem(v);
+  require(vibration.empty(), vibration);
   require(finite_nonneg(v.shock_rate_hz), "shock rate must be >= 0 Hz");
   require(std::isfinite(v.shock_peak) && std::isfinite(v.shock_duration_s) && v.shock_duration_s > 0,
           "shock peak and duration must be finite, duration > 0");

@@ -32,15 +32,8 @@ DrillingSimulator::DrillingSimulator(const DrillingScenario& scenario)
       vib_rng_(scenario.seed ^ kVibrationStream) {
   detail::validate(scenario_, trajectory_.stop_count());
 
-  // The platform's vibration model: tones over 0.75..1.25 of the centre frequency, random phases.
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
   const auto& v = scenario_.vibration;
-  for (int axis = 0; axis < 2; ++axis)
-    for (int k = 0; k < kVibrationTones; ++k) {
-      vib_freq_[axis][k] = v.frequency_hz * (0.75 + 0.5 * k / (kVibrationTones - 1));
-      vib_phase_[axis][k] = 2.0 * kPi * unit(vib_rng_);
-    }
-  vib_amplitude_ = v.lateral_rms * std::sqrt(2.0 / kVibrationTones);
+  tones_ = VibrationTones(v, vib_rng_);
   // Drawn from a stream of its own: the other noises stay what they were for the seed.
   std::mt19937_64 magnetization_rng(scenario_.seed ^ kMagnetizationStream);
   axial_bias_uT_ = scenario_.magnetometer.axial_bias_uT.value_or(

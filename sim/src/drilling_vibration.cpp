@@ -12,10 +12,7 @@ namespace plumb::sim {
 Eigen::Vector3d DrillingSimulator::vibration_at(double t, double drive) {
   Eigen::Vector3d out = Eigen::Vector3d::Zero();
   const auto& v = scenario_.vibration;
-  if (vib_amplitude_ > 0 && drive > 0)
-    for (int axis = 0; axis < 2; ++axis)
-      for (int k = 0; k < kVibrationTones; ++k)
-        out[axis] += drive * vib_amplitude_ * std::sin(2.0 * kPi * vib_freq_[axis][k] * t + vib_phase_[axis][k]);
+  if (tones_.active() && drive > 0) out.head<2>() = drive * tones_.at(t);
   // Poisson arrivals (as on the platform); a shock keeps the drive of its start, and one arriving
   // while the tool stands is lost.
   const double duration = std::max(v.shock_duration_s, 2.0 / scenario_.sample_rate_hz);

@@ -36,8 +36,8 @@ void validate(const Scenario& s) {
   require(s.sigma_mag() >= 0 && std::isfinite(s.sigma_mag()), "magnetometer noise must be finite and >= 0");
   require(std::isfinite(s.noise.sigma_gyro) && s.noise.sigma_gyro >= 0, "gyro noise must be finite and >= 0");
   const auto& v = s.vibration;
-  require(std::isfinite(v.lateral_rms) && v.lateral_rms >= 0, "vibration rms must be >= 0");
-  require(std::isfinite(v.frequency_hz) && v.frequency_hz > 0, "vibration frequency must be > 0 Hz");
+  const std::string vibration = vibration_problem(v);
+  require(vibration.empty(), vibration);
   require(std::isfinite(v.shock_rate_hz) && v.shock_rate_hz >= 0, "shock rate must be >= 0 Hz");
   require(std::isfinite(v.shock_peak) && std::isfinite(v.shock_duration_s) && v.shock_duration_s > 0,
           "shock peak and duration must be finite, duration > 0");
@@ -57,16 +57,8 @@ PlatformSimulator::PlatformSimulator(const Scenario& scenario)
   validate(scenario_);
   sigma_accel_ = scenario_.sigma_accel();
   sigma_mag_ = scenario_.sigma_mag();
-  // A few tones evenly spread over 0.75..1.25 of the centre frequency with random phases:
-  // band-limited, and the rms is exact over long records (each tone of amplitude a carries a^2/2).
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
   const auto& v = scenario_.vibration;
-  for (int axis = 0; axis < 2; ++axis)
-    for (int k = 0; k < kVibrationTones; ++k) {
-      vib_freq_[axis][k] = v.frequency_hz * (0.75 + 0.5 * k / (kVibrationTones - 1));
-      vib_phase_[axis][k] = 2.0 * kPi * unit(vib_rng_);
-    }
-  vib_amplitude_ = v.lateral_rms * std::sqrt(2.0 / kVibrationTones);
+  tones_ = VibrationTones(v, vib_rng_);
   if (v.shock_rate_hz > 0 && v.shock_peak != 0)
     next_shock_ = std::exponential_distribution<double>(v.shock_rate_hz)(vib_rng_);
   else
@@ -82,10 +74,7 @@ bool PlatformSimulator::done() const { return index_ >= sample_count(); }
 Eigen::Vector3d PlatformSimulator::vibration_at(double t) {
   Eigen::Vector3d out = Eigen::Vector3d::Zero();
   const auto& v = scenario_.vibration;
-  if (vib_amplitude_ > 0)
-    for (int axis = 0; axis < 2; ++axis)
-      for (int k = 0; k < kVibrationTones; ++k)
-        out[axis] += vib_amplitude_ * std::sin(2.0 * kPi * vib_freq_[axis][k] * t + vib_phase_[axis][k]);
+  out.head<2>() = tones_.at(t);
   // Poisson arrivals; a later shock replaces one still ringing.
   const double duration = std::max(v.shock_duration_s, 2.0 / scenario_.sample_rate_hz);
   while (t >= next_shock_) {

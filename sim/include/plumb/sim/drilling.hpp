@@ -190,10 +190,7 @@ class DrillingSimulator {
   std::mt19937_64 rng_;        // sensor noise
   std::mt19937_64 vib_rng_;    // vibration: separate, so the noise does not depend on it
   std::normal_distribution<double> normal_{0.0, 1.0};
-  static constexpr int kVibrationTones = 4;  // per lateral axis
-  double vib_freq_[2][kVibrationTones] = {};
-  double vib_phase_[2][kVibrationTones] = {};
-  double vib_amplitude_ = 0;
+  VibrationTones tones_;
   double shock_until_ = -1, shock_start_ = 0, shock_dir_ = 0, shock_drive_ = 0, next_shock_ = 0;
 };
 

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include "plumb/core/sample.hpp"
+#include "plumb/sim/vibration.hpp"
 
 namespace plumb::sim {
 
@@ -43,16 +44,6 @@ struct Noise {
   std::optional<double> snr_accel_db;
   std::optional<double> snr_mag_db;
   double sigma_gyro = 0;               // rad/s
-};
-
-struct Vibration {
-  double lateral_rms = 0;     // m/s^2 rms on each of x and y: band-limited lateral vibration added to f
-  double frequency_hz = 15;   // centre frequency
-  double shock_rate_hz = 0;   // mean rate of shocks (Poisson)
-  double shock_peak = 0;      // m/s^2, half-sine shocks of 2 ms
-  // Shock length; the sampled shock is never shorter than two sample periods (the sensor's
-  // anti-alias filter spreads it), so every shock shows in the samples.
-  double shock_duration_s = 0.002;
 };
 
 struct Scenario {
@@ -103,7 +94,6 @@ class PlatformSimulator {
   std::size_t index() const { return index_; }  // samples produced so far
 
  private:
-  static constexpr int kVibrationTones = 4;   // per lateral axis
   Eigen::Vector3d vibration_at(double t);
   Scenario scenario_;
   std::size_t index_ = 0;
@@ -111,9 +101,7 @@ class PlatformSimulator {
   std::mt19937_64 vib_rng_;    // vibration and shocks: separate, so the noise does not depend on them
   std::normal_distribution<double> normal_{0.0, 1.0};
   double sigma_accel_ = 0, sigma_mag_ = 0;
-  double vib_freq_[2][kVibrationTones] = {};
-  double vib_phase_[2][kVibrationTones] = {};
-  double vib_amplitude_ = 0;
+  VibrationTones tones_;
   double shock_until_ = -1, shock_start_ = 0, shock_dir_ = 0, next_shock_ = 0;
 };
 
