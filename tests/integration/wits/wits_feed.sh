@@ -40,6 +40,12 @@ reader serial --device "$work/wits-line" --sensor-offset 10
 for tool in server client serial; do
   wait_for "$work/$tool.log" "reading WITS level 0" 40 || { cat "$work/$tool.log" "$work/echo.err"; fail "$tool: no reader of plumb/depth"; finish; }
 done
+# Each reader's status (once a second while it waits) has reached the echo: its last one, published
+# as it stops, will too. (Across vendors on a loaded machine, plumb/status matched after a reader
+# had already stopped: its only status was lost, seen once in CI.)
+for tool in server client serial; do
+  wait_for "$work/status.csv" "plumb-wits/$tool" 40 || fail "$tool: no status on plumb/status while waiting"
+done
 plumb-wits-send --connect "127.0.0.1:$port_a" "${faults[@]}" > "$work/server.sent" 2>&1 &
 senders=($!)
 plumb-wits-send --listen "$port_b" --units ft --start-depth 3000 "${faults[@]}" > "$work/client.sent" 2>&1 &
