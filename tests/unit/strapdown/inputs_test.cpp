@@ -243,19 +243,30 @@ TEST(StrapdownInputs, VibrationTheReadingsCannotResolveIsMeasured) {
 // is integrated through an attitude the readings do not resolve. The velocity's uncertainty across
 // the axis grows by what the readings show (the specific force's change from one reading to the
 // next, times the turn within the step).
+// A 400 Hz simulated run read as 10 Hz means by an integrating sensor, its truth and drilled length.
+struct TenHertzMeans {
+  std::vector<Sample> means;
+  std::vector<TruthSample> truth;
+  double drilled_m = 0;
+};
+TenHertzMeans read_at_ten_hertz(const sim::DrillingScenario& scenario) {
+  sim::DrillingSimulator simulator(scenario);
+  TenHertzMeans run;
+  run.means = read_as_means(simulator.run(&run.truth), static_cast<std::size_t>(scenario.sample_rate_hz / 10));
+  run.drilled_m = simulator.trajectory().drilled_length_m();
+  return run;
+}
+
 TEST(StrapdownInputs, VibrationOfATurningToolReadAsTenHertzMeans) {
-  constexpr int kPerReading = 40;  // simulated at 400 Hz
   RunMetrics sum, smoothed;
   for (std::uint64_t seed : {1, 2, 3}) {
     auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 400, seed);
     scenario.vibration.lateral_rms = 4.0;
     three_rotary_segments(scenario, 90);
-    sim::DrillingSimulator simulator(scenario);
-    std::vector<TruthSample> truth;
-    const std::vector<Sample> means = read_as_means(simulator.run(&truth), kPerReading);
+    const TenHertzMeans run = read_at_ten_hertz(scenario);
     estimator::Parameters p = parameters_for(scenario);
     p["imu_samples"] = "mean";
-    const RunMetrics m = score_drilling(means, truth, 400, simulator.trajectory().drilled_length_m(), p);
+    const RunMetrics m = score_drilling(run.means, run.truth, 400, run.drilled_m, p);
     std::printf("0.4 g read as 10 Hz means, 90 rpm, seed %d: max error I %.3f A %.3f T %.3f deg, "
                 "RMS(error/sigma) %.2f, end %.2f %% (RMS(error/sigma) %.2f)\n",
                 static_cast<int>(seed), m.max_inc_err_deg, m.max_azi_err_deg, m.max_tf_err_deg, m.rms_z(),
@@ -266,7 +277,7 @@ TEST(StrapdownInputs, VibrationOfATurningToolReadAsTenHertzMeans) {
     EXPECT_LE(m.end_position_rms_z(), 2.0);
     // The smoother takes the process noise each epoch had, this added velocity noise too.
     p["smooth"] = "1";
-    const RunMetrics s = score_drilling(means, truth, 400, simulator.trajectory().drilled_length_m(), p);
+    const RunMetrics s = score_drilling(run.means, run.truth, 400, run.drilled_m, p);
     std::printf("  smoothed: max error I %.3f A %.3f T %.3f deg, RMS(error/sigma) %.2f\n", s.max_inc_err_deg,
                 s.max_azi_err_deg, s.max_tf_err_deg, s.rms_z());
     EXPECT_LE(s.max_attitude_err_deg(), m.max_attitude_err_deg());
@@ -285,7 +296,6 @@ TEST(StrapdownInputs, VibrationOfATurningToolReadAsTenHertzMeans) {
 // Without the change: the azimuth 0.33-0.47 deg off, its RMS(error/sigma) 1.95-2.3 (0.12-0.17 and
 // 0.36-0.81 with it; on a run from the outside generator, 2.2 deg and 5.6).
 TEST(StrapdownInputs, BroadbandVibrationOfAnInclinedTurningToolLeavesTheAzimuth) {
-  constexpr int kPerReading = 40;  // simulated at 400 Hz
   RunMetrics pooled;
   for (std::uint64_t seed : {1, 2, 3}) {
     auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 400, seed);
@@ -294,13 +304,11 @@ TEST(StrapdownInputs, BroadbandVibrationOfAnInclinedTurningToolLeavesTheAzimuth)
     scenario.vibration.frequency_hz = 24;
     scenario.vibration.band_hz = 32;
     three_rotary_segments(scenario, 60);
-    sim::DrillingSimulator simulator(scenario);
-    std::vector<TruthSample> truth;
-    const std::vector<Sample> means = read_as_means(simulator.run(&truth), kPerReading);
+    const TenHertzMeans run = read_at_ten_hertz(scenario);
     estimator::Parameters p = parameters_for(scenario);
     p["imu_samples"] = "mean";
     p["mag_axial_bias_uT"] = "0.3";
-    const RunMetrics m = score_drilling(means, truth, 400, simulator.trajectory().drilled_length_m(), p);
+    const RunMetrics m = score_drilling(run.means, run.truth, 400, run.drilled_m, p);
     std::printf("I 45 deg, 0.3 g of 8-40 Hz read as 10 Hz means, 60 rpm, seed %d: max error I %.3f A %.3f T %.3f deg, "
                 "azimuth RMS(error/sigma) %.2f, end %.2f %% (RMS(error/sigma) %.2f)\n",
                 static_cast<int>(seed), m.max_inc_err_deg, m.max_azi_err_deg, m.max_tf_err_deg, m.rms_z_angle(1),
