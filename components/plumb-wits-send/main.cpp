@@ -20,8 +20,6 @@
 namespace plumb::wits_send {
 namespace {
 
-constexpr const char* kProgram = "plumb-wits-send";
-
 struct Options {
   std::string listen, connect, serial;
   double start_m = 1000;

@@ -22,7 +22,6 @@ namespace plumb::wits_send {
 namespace {
 
 using namespace std::chrono_literals;
-constexpr const char* kProgram = "plumb-wits-send";
 
 bool send_all(int fd, const std::string& bytes) {
   std::size_t done = 0;

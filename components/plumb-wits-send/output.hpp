@@ -8,6 +8,8 @@
 
 namespace plumb::wits_send {
 
+inline constexpr const char* kProgram = "plumb-wits-send";
+
 class Output {
  public:
   virtual ~Output() = default;

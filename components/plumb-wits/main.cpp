@@ -12,8 +12,6 @@
 namespace plumb::wits_component {
 namespace {
 
-constexpr const char* kProgram = "plumb-wits";
-
 void add_link_options(CLI::App& app, ReaderOptions& o, double& reconnect_max_s) {
   auto* listen = app.add_option("--listen", o.listen, "TCP server: take the feed on [ADDRESS:]PORT (the rig connects here)");
   auto* connect = app.add_option("--connect", o.connect, "TCP client: connect to the rig's WITS server at HOST:PORT");

@@ -15,7 +15,6 @@
 namespace plumb::wits_component {
 namespace {
 
-constexpr const char* kProgram = "plumb-wits";
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }

@@ -10,6 +10,8 @@
 
 namespace plumb::wits_component {
 
+inline constexpr const char* kProgram = "plumb-wits";
+
 struct ReaderOptions {
   components::TransportOptions transport;
   std::string listen;   // [ADDRESS:]PORT: TCP server

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "plumb/sim/drilling.hpp"
+#include "scenario_checks.hpp"
 
 namespace plumb::sim::detail {
 
@@ -30,7 +31,6 @@ Eigen::Vector3d along_hole(double inc0, double azi0, double build, double turn, 
 // biases. `require(ok, what)` throws with the scenario's own prefix.
 template <class Scenario, class Require>
 void validate_imu_site(const Scenario& s, const Require& require) {
-  const auto finite_nonneg = [](double v) { return std::isfinite(v) && v >= 0; };
   require(std::isfinite(s.sample_rate_hz) && s.sample_rate_hz > 0, "sample rate must be > 0 Hz");
   require(std::isfinite(s.latitude_deg) && std::abs(s.latitude_deg) <= 90, "latitude must be within [-90, 90] deg");
   require(std::isfinite(s.g) && s.g > 0, "g must be > 0");

@@ -8,18 +8,14 @@
 #include "drilling_detail.hpp"
 #include "plumb/core/attitude.hpp"
 #include "plumb/sim/drilling.hpp"
+#include "scenario_checks.hpp"
 
 namespace plumb::sim {
 namespace {
 
+constexpr Refusal require_plan{"invalid drilling plan"};
+
 constexpr double kPer30m = kDeg / 30.0;  // deg per 30 m -> rad per m
-constexpr double kRpmToRadPerS = 2.0 * kPi / 60.0;
-
-void require(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument("invalid drilling plan: " + what);
-}
-
-bool finite_nonneg(double v) { return std::isfinite(v) && v >= 0; }
 
 std::string name_of(std::size_t k, const DrillSegment& s) {
   return "segment " + std::to_string(k + 1) + " (" + (s.kind == SegmentKind::Stop ? "stop" : "drill") + ")";
@@ -28,15 +24,15 @@ std::string name_of(std::size_t k, const DrillSegment& s) {
 // Duration of a drilling segment including both ramps: the ramps together cover rop * ramp.
 double drill_duration(std::size_t k, const DrillSegment& s, double ramp) {
   const std::string name = name_of(k, s);
-  require(std::isfinite(s.rop_mps) && s.rop_mps > 0, name + ": rate of penetration must be > 0 m/s");
-  require(finite_nonneg(s.length_m) && finite_nonneg(s.duration_s), name + ": length and duration must be >= 0");
-  require((s.length_m > 0) != (s.duration_s > 0), name + ": give a length or a duration, not both");
-  require(std::isfinite(s.build_deg_per_30m) && std::isfinite(s.turn_deg_per_30m),
+  require_plan(std::isfinite(s.rop_mps) && s.rop_mps > 0, name + ": rate of penetration must be > 0 m/s");
+  require_plan(finite_nonneg(s.length_m) && finite_nonneg(s.duration_s), name + ": length and duration must be >= 0");
+  require_plan((s.length_m > 0) != (s.duration_s > 0), name + ": give a length or a duration, not both");
+  require_plan(std::isfinite(s.build_deg_per_30m) && std::isfinite(s.turn_deg_per_30m),
           name + ": build and turn rates must be finite");
-  require(std::isfinite(s.rpm), name + ": rpm must be finite");
-  require(s.mode == SteeringMode::Rotary || s.rpm == 0, name + ": sliding keeps the toolface; rpm needs rotary mode");
+  require_plan(std::isfinite(s.rpm), name + ": rpm must be finite");
+  require_plan(s.mode == SteeringMode::Rotary || s.rpm == 0, name + ": sliding keeps the toolface; rpm needs rotary mode");
   const double duration = s.length_m > 0 ? s.length_m / s.rop_mps + ramp : s.duration_s;
-  require(duration >= 2.0 * ramp, name + ": too short for its two " + std::to_string(ramp) +
+  require_plan(duration >= 2.0 * ramp, name + ": too short for its two " + std::to_string(ramp) +
                                       " s speed ramps (at least rop x ramp metres)");
   return duration;
 }
@@ -67,11 +63,11 @@ DrillSegment DrillSegment::stop(double duration_s) {
 }
 
 DrillingTrajectory::DrillingTrajectory(const DrillingPlan& plan) {
-  require(std::isfinite(plan.inclination_deg) && plan.inclination_deg >= 0 && plan.inclination_deg <= 180,
+  require_plan(std::isfinite(plan.inclination_deg) && plan.inclination_deg >= 0 && plan.inclination_deg <= 180,
           "start inclination must be within [0, 180] deg");
-  require(std::isfinite(plan.azimuth_deg) && std::isfinite(plan.toolface_deg), "start azimuth and toolface must be finite");
-  require(finite_nonneg(plan.alignment_s), "alignment time must be >= 0 s");
-  require(std::isfinite(plan.ramp_s) && plan.ramp_s > 0, "speed ramp must be > 0 s (speed must stay continuous)");
+  require_plan(std::isfinite(plan.azimuth_deg) && std::isfinite(plan.toolface_deg), "start azimuth and toolface must be finite");
+  require_plan(finite_nonneg(plan.alignment_s), "alignment time must be >= 0 s");
+  require_plan(std::isfinite(plan.ramp_s) && plan.ramp_s > 0, "speed ramp must be > 0 s (speed must stay continuous)");
 
   Phase cur;
   cur.inc0 = plan.inclination_deg * kDeg;
@@ -89,8 +85,8 @@ DrillingTrajectory::DrillingTrajectory(const DrillingPlan& plan) {
     ph.moving = false;
     ph.rop = ph.ramp = ph.build = ph.turn = ph.spin = 0;
     if (seg.kind == SegmentKind::Stop) {
-      require(std::isfinite(seg.duration_s) && seg.duration_s > 0, name_of(k, seg) + ": duration must be > 0 s");
-      require(seg.length_m == 0, name_of(k, seg) + ": a stop has no length");
+      require_plan(std::isfinite(seg.duration_s) && seg.duration_s > 0, name_of(k, seg) + ": duration must be > 0 s");
+      require_plan(seg.length_m == 0, name_of(k, seg) + ": a stop has no length");
       ph.t1 = ph.t0 + seg.duration_s;
       ph.stop_index = stops_++;
       phases_.push_back(ph);
@@ -103,7 +99,7 @@ DrillingTrajectory::DrillingTrajectory(const DrillingPlan& plan) {
     ph.ramp = plan.ramp_s;
     ph.build = seg.build_deg_per_30m * kPer30m;
     ph.turn = seg.turn_deg_per_30m * kPer30m;
-    ph.spin = seg.mode == SteeringMode::Rotary ? seg.rpm * kRpmToRadPerS / seg.rop_mps : 0.0;
+    ph.spin = seg.mode == SteeringMode::Rotary ? seg.rpm * kRpm / seg.rop_mps : 0.0;
     phases_.push_back(ph);
     // The next phase starts from this one's end, evaluated in closed form.
     const double length = ph.rop * (duration - ph.ramp);
@@ -113,11 +109,11 @@ DrillingTrajectory::DrillingTrajectory(const DrillingPlan& plan) {
     cur.azi0 = ph.azi0 + ph.turn * length;
     cur.tf0 = ph.tf0 + ph.spin * length;
     cur.p0 = ph.p0 + detail::along_hole(ph.inc0, ph.azi0, ph.build, ph.turn, length);
-    require(cur.inc0 >= -1e-12 && cur.inc0 <= kPi + 1e-12,
+    require_plan(cur.inc0 >= -1e-12 && cur.inc0 <= kPi + 1e-12,
             name_of(k, seg) + ": inclination leaves [0, 180] deg (" + std::to_string(cur.inc0 / kDeg) + " deg at its end)");
     cur.inc0 = std::clamp(cur.inc0, 0.0, kPi);
   }
-  require(!phases_.empty(), "the plan is empty (no alignment and no segments)");
+  require_plan(!phases_.empty(), "the plan is empty (no alignment and no segments)");
 }
 
 double DrillingTrajectory::drilled_length_m() const {

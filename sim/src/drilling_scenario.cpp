@@ -6,15 +6,12 @@
 
 #include "drilling_detail.hpp"
 #include "plumb/sim/drilling.hpp"
+#include "scenario_checks.hpp"
 
 namespace plumb::sim {
 namespace {
 
-void require(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument("invalid drilling scenario: " + what);
-}
-
-bool finite_nonneg(double v) { return std::isfinite(v) && v >= 0; }
+constexpr Refusal require_drilling{"invalid drilling scenario"};
 
 DrillingScenario with_sensors(const ImuGrade& grade, double rate_hz, std::uint64_t seed) {
   DrillingScenario s;
@@ -70,26 +67,26 @@ double DrillingScenario::duration_s() const { return DrillingTrajectory(plan).du
 namespace detail {
 
 void validate(const DrillingScenario& s, std::size_t stop_count) {
-  validate_imu_site(s, require);
-  require(finite_nonneg(s.magnetometer.sigma_uT), "magnetometer noise must be finite and >= 0 uT");
-  require(finite_nonneg(s.magnetometer.axial_bias_sd_uT), "magnetometer axial bias spread must be finite and >= 0 uT");
-  require(!s.magnetometer.axial_bias_uT || std::isfinite(*s.magnetometer.axial_bias_uT), "magnetometer axial bias must be finite");
+  validate_imu_site(s, require_drilling);
+  require_drilling(finite_nonneg(s.magnetometer.sigma_uT), "magnetometer noise must be finite and >= 0 uT");
+  require_drilling(finite_nonneg(s.magnetometer.axial_bias_sd_uT), "magnetometer axial bias spread must be finite and >= 0 uT");
+  require_drilling(!s.magnetometer.axial_bias_uT || std::isfinite(*s.magnetometer.axial_bias_uT), "magnetometer axial bias must be finite");
   for (const auto& d : s.magnetometer.disturbances) {
-    require(d.stop_index < stop_count, "magnetic disturbance at stop " + std::to_string(d.stop_index) +
+    require_drilling(d.stop_index < stop_count, "magnetic disturbance at stop " + std::to_string(d.stop_index) +
                                            " but the plan has " + std::to_string(stop_count) + " stop(s) (0-based)");
-    require(std::isfinite(d.delta_total_uT) && std::isfinite(d.delta_dip_deg),
+    require_drilling(std::isfinite(d.delta_total_uT) && std::isfinite(d.delta_dip_deg),
             "magnetic disturbance offsets must be finite");
-    require(s.total_b + d.delta_total_uT >= 0 && std::abs(s.dip_deg + d.delta_dip_deg) <= 90,
+    require_drilling(s.total_b + d.delta_total_uT >= 0 && std::abs(s.dip_deg + d.delta_dip_deg) <= 90,
             "a disturbed field must keep |B| >= 0 and dip within [-90, 90] deg");
   }
-  require(finite_nonneg(s.depth.sigma_m) && finite_nonneg(s.depth.quantum_m), "depth noise and quantum must be >= 0 m");
+  require_drilling(finite_nonneg(s.depth.sigma_m) && finite_nonneg(s.depth.quantum_m), "depth noise and quantum must be >= 0 m");
   const auto& v = s.vibration;
   const std::string vibration = vibration_problem(v);
-  require(vibration.empty(), vibration);
-  require(finite_nonneg(v.shock_rate_hz), "shock rate must be >= 0 Hz");
-  require(std::isfinite(v.shock_peak) && std::isfinite(v.shock_duration_s) && v.shock_duration_s > 0,
+  require_drilling(vibration.empty(), vibration);
+  require_drilling(finite_nonneg(v.shock_rate_hz), "shock rate must be >= 0 Hz");
+  require_drilling(std::isfinite(v.shock_peak) && std::isfinite(v.shock_duration_s) && v.shock_duration_s > 0,
           "shock peak and duration must be finite, duration > 0");
-  require(s.tool_id.size() <= 31, "tool id: at most 31 characters");
+  require_drilling(s.tool_id.size() <= 31, "tool id: at most 31 characters");
 }
 
 }  // namespace detail

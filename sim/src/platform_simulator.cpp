@@ -9,39 +9,38 @@
 #include "plumb/core/attitude.hpp"
 #include "plumb/sim/platform.hpp"
 #include "plumb/sim/run_all.hpp"
+#include "scenario_checks.hpp"
 
 namespace plumb::sim {
 namespace {
 
+constexpr Refusal require_platform{"invalid scenario"};
+
 constexpr double kReferenceTempC = 25.0;  // TriadErrors::bias_temp is relative to this
 
-void require(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument("invalid scenario: " + what);
-}
-
 void validate(const Scenario& s) {
-  require(std::isfinite(s.sample_rate_hz) && s.sample_rate_hz > 0, "sample rate must be > 0 Hz");
-  require(std::isfinite(s.duration_s) && s.duration_s >= 0, "duration must be >= 0 s");
-  require(std::isfinite(s.g) && s.g > 0, "g must be > 0");
-  require(std::isfinite(s.total_b) && s.total_b >= 0, "total field must be >= 0");
-  require(std::isfinite(s.dip_deg) && std::abs(s.dip_deg) <= 90, "dip must be within [-90, 90] deg");
-  require(std::isfinite(s.inclination_deg) && s.inclination_deg >= 0 && s.inclination_deg <= 180,
+  require_platform(std::isfinite(s.sample_rate_hz) && s.sample_rate_hz > 0, "sample rate must be > 0 Hz");
+  require_platform(std::isfinite(s.duration_s) && s.duration_s >= 0, "duration must be >= 0 s");
+  require_platform(std::isfinite(s.g) && s.g > 0, "g must be > 0");
+  require_platform(std::isfinite(s.total_b) && s.total_b >= 0, "total field must be >= 0");
+  require_platform(std::isfinite(s.dip_deg) && std::abs(s.dip_deg) <= 90, "dip must be within [-90, 90] deg");
+  require_platform(std::isfinite(s.inclination_deg) && s.inclination_deg >= 0 && s.inclination_deg <= 180,
           "inclination must be within [0, 180] deg");
-  require(std::isfinite(s.azimuth_deg) && std::isfinite(s.toolface0_deg), "azimuth and toolface must be finite");
+  require_platform(std::isfinite(s.azimuth_deg) && std::isfinite(s.toolface0_deg), "azimuth and toolface must be finite");
   const auto& r = s.rotation;
-  require(std::isfinite(r.rpm) && std::isfinite(r.rpm_end) && std::isfinite(r.ramp_s), "rotation speeds must be finite");
+  require_platform(std::isfinite(r.rpm) && std::isfinite(r.rpm_end) && std::isfinite(r.ramp_s), "rotation speeds must be finite");
   if (r.kind == ProfileKind::StopAndGo || r.kind == ProfileKind::StickSlip)
-    require(std::isfinite(r.period_s) && r.period_s > 0, "rotation period must be > 0 s");
-  require(s.sigma_accel() >= 0 && std::isfinite(s.sigma_accel()), "accelerometer noise must be finite and >= 0");
-  require(s.sigma_mag() >= 0 && std::isfinite(s.sigma_mag()), "magnetometer noise must be finite and >= 0");
-  require(std::isfinite(s.noise.sigma_gyro) && s.noise.sigma_gyro >= 0, "gyro noise must be finite and >= 0");
+    require_platform(std::isfinite(r.period_s) && r.period_s > 0, "rotation period must be > 0 s");
+  require_platform(s.sigma_accel() >= 0 && std::isfinite(s.sigma_accel()), "accelerometer noise must be finite and >= 0");
+  require_platform(s.sigma_mag() >= 0 && std::isfinite(s.sigma_mag()), "magnetometer noise must be finite and >= 0");
+  require_platform(std::isfinite(s.noise.sigma_gyro) && s.noise.sigma_gyro >= 0, "gyro noise must be finite and >= 0");
   const auto& v = s.vibration;
   const std::string vibration = vibration_problem(v);
-  require(vibration.empty(), vibration);
-  require(std::isfinite(v.shock_rate_hz) && v.shock_rate_hz >= 0, "shock rate must be >= 0 Hz");
-  require(std::isfinite(v.shock_peak) && std::isfinite(v.shock_duration_s) && v.shock_duration_s > 0,
+  require_platform(vibration.empty(), vibration);
+  require_platform(std::isfinite(v.shock_rate_hz) && v.shock_rate_hz >= 0, "shock rate must be >= 0 Hz");
+  require_platform(std::isfinite(v.shock_peak) && std::isfinite(v.shock_duration_s) && v.shock_duration_s > 0,
           "shock peak and duration must be finite, duration > 0");
-  require(std::isfinite(s.temp_start_c) && std::isfinite(s.temp_end_c), "temperatures must be finite");
+  require_platform(std::isfinite(s.temp_start_c) && std::isfinite(s.temp_end_c), "temperatures must be finite");
 }
 
 Eigen::Vector3d apply_errors(const TriadErrors& e, const Eigen::Vector3d& truth, double temp_c) {

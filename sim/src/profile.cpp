@@ -9,8 +9,6 @@
 namespace plumb::sim {
 namespace {
 
-constexpr double kRpmToRadPerS = 2.0 * kPi / 60.0;
-
 // Integral of the rate from 0 to t, in revolutions-per-minute times seconds.
 double rpm_seconds(const RotationProfile& p, double t) {
   switch (p.kind) {
@@ -39,7 +37,7 @@ double rpm_seconds(const RotationProfile& p, double t) {
 }  // namespace
 
 double RotationProfile::angle(double t, double toolface0) const {
-  return toolface0 + kRpmToRadPerS * rpm_seconds(*this, t);
+  return toolface0 + kRpm * rpm_seconds(*this, t);
 }
 
 double RotationProfile::rpm_at(double t) const {

@@ -6,31 +6,29 @@
 #include <stdexcept>
 #include <string>
 
+#include "scenario_checks.hpp"
+
 namespace plumb::sim {
 namespace {
 
-void require(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument("rig depth reports: " + what);
-}
-
-bool finite_nonneg(double v) { return std::isfinite(v) && v >= 0; }
+constexpr Refusal require_reports{"rig depth reports"};
 
 }  // namespace
 
 RigDepthReporter::RigDepthReporter(const RigDepthReports& reports, double rate_hz, std::uint64_t seed)
     : reports_(reports), rng_(seed), noise_(0.0, reports.sd_m > 0 ? reports.sd_m : 1.0) {
-  require(std::isfinite(rate_hz) && rate_hz > 0, "the sampling rate must be finite and > 0 Hz");
-  require(std::isfinite(reports.interval_s) && std::llround(reports.interval_s * rate_hz) >= 1,
+  require_reports(std::isfinite(rate_hz) && rate_hz > 0, "the sampling rate must be finite and > 0 Hz");
+  require_reports(std::isfinite(reports.interval_s) && std::llround(reports.interval_s * rate_hz) >= 1,
           "the interval between reports must be at least one row (1/rate)");
-  require(finite_nonneg(reports.sd_m), "the noise must be finite and >= 0 m");
-  require(finite_nonneg(reports.quantum_m), "the rounding step must be finite and >= 0 m");
-  require(finite_nonneg(reports.late_s), "the delay must be finite and >= 0 s");
+  require_reports(finite_nonneg(reports.sd_m), "the noise must be finite and >= 0 m");
+  require_reports(finite_nonneg(reports.quantum_m), "the rounding step must be finite and >= 0 m");
+  require_reports(finite_nonneg(reports.late_s), "the delay must be finite and >= 0 s");
   rows_per_report_ = static_cast<std::size_t>(std::llround(reports.interval_s * rate_hz));
   late_rows_ = static_cast<std::size_t>(std::llround(reports.late_s * rate_hz));
 }
 
 void RigDepthReporter::apply(Sample& sample) {
-  require((sample.flags & flags::kHasDepth) != 0 && std::isfinite(sample.depth_m),
+  require_reports((sample.flags & flags::kHasDepth) != 0 && std::isfinite(sample.depth_m),
           "row " + std::to_string(row_) + " has no exact depth to report");
   // Before late_rows_ rows have passed, the oldest known depth stands for the earlier ones.
   recent_.push_back(sample.depth_m);

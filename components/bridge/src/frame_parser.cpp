@@ -2,15 +2,10 @@
 
 #include <cstring>
 
+#include "little_endian.hpp"
 #include "plumb/bridge/protocol.hpp"
 
 namespace plumb::bridge {
-namespace {
-std::uint16_t get_u16(const std::uint8_t* p) { return static_cast<std::uint16_t>(p[0] | (p[1] << 8)); }
-std::uint32_t get_u32(const std::uint8_t* p) {
-  return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 | std::uint32_t(p[3]) << 24;
-}
-}  // namespace
 
 void FrameParser::feed(std::span<const std::uint8_t> bytes, std::vector<Sample>& out) {
   // Compact before growing so the buffer stays about one chunk plus one frame long.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "little_endian.hpp"
 #include "plumb/csv/files.hpp"
 
 namespace plumb::bridge {
@@ -36,10 +37,6 @@ void put_u32(std::uint8_t* p, std::uint32_t v) {
 void put_u64(std::uint8_t* p, std::uint64_t v) {
   for (int i = 0; i < 8; ++i) p[i] = static_cast<std::uint8_t>(v >> (8 * i));
 }
-std::uint32_t get_u32(const std::uint8_t* p) {
-  return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 | std::uint32_t(p[3]) << 24;
-}
-std::uint64_t get_u64(const std::uint8_t* p) { return std::uint64_t(get_u32(p)) | std::uint64_t(get_u32(p + 4)) << 32; }
 void put_f32(std::uint8_t* p, double v) { put_u32(p, std::bit_cast<std::uint32_t>(static_cast<float>(v))); }
 double get_f32(const std::uint8_t* p) { return static_cast<double>(std::bit_cast<float>(get_u32(p))); }
 

@@ -15,14 +15,14 @@ namespace {
 
 std::vector<std::uint8_t> bytes_of(const std::string& s) { return {s.begin(), s.end()}; }
 
-struct Parsed {
+struct ParsedLines {
   Counters counters;
   std::vector<Sample> samples;
   std::string last_error;
 };
 
-Parsed parse_lines(const std::string& text, std::size_t chunk) {
-  Parsed p;
+ParsedLines parse_lines(const std::string& text, std::size_t chunk) {
+  ParsedLines p;
   LineParser parser(p.counters);
   const auto bytes = bytes_of(text);
   for (std::size_t at = 0; at < bytes.size(); at += chunk) {

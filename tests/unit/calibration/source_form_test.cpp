@@ -11,7 +11,7 @@ namespace {
 
 using namespace test::source;
 
-const std::vector<double> kRuns = {25, 65, 105, 145, 185, 225};
+const std::vector<double> kOvenTemperaturesC = {25, 65, 105, 145, 185, 225};
 
 Rig tilted_rig() {
   Rig rig;
@@ -36,7 +36,7 @@ TEST(SourceForm, SixPositionVoltageAndPulsesWithin00005Deg) {
 TEST(SourceForm, TwentyFourPositionWithQuadraticDriftWithin00005DegOverTheRange) {
   std::mt19937_64 rng(703);
   const Package pkg = Package::random(rng, false, 2);
-  const Trial t = twenty_four_trial(pkg, tilted_rig(), kRuns, 30, 73);
+  const Trial t = twenty_four_trial(pkg, tilted_rig(), kOvenTemperaturesC, 30, 73);
   ASSERT_TRUE(t.outcome.ok()) << t.outcome.error;
   const auto& r = *t.outcome.result;
   std::printf("24-position (volts, order chosen %s): worst inclination error before %.3f deg, after %.6f deg, "

@@ -6,7 +6,7 @@
 namespace plumb {
 namespace {
 
-const std::vector<double> kRuns = {25, 75, 125, 175, 200, 225};
+const std::vector<double> kTemperaturesC = {25, 75, 125, 175, 200, 225};
 
 struct Calibrated {
   sim::SensorPackage pkg;
@@ -19,7 +19,7 @@ Calibrated calibrate(sim::AccelOutput output, std::uint64_t seed) {
   rig.seed = seed;
   rig.table_tilt_x_deg = 0.03;  // averaged out by the four rotations
   rig.table_tilt_y_deg = -0.02;
-  const auto rec = sim::record(c.pkg, rig, sim::twenty_four_position_plan(kRuns, 40));
+  const auto rec = sim::record(c.pkg, rig, sim::twenty_four_position_plan(kTemperaturesC, 40));
   calibration::TwentyFourOptions opt;
   opt.nominal = c.pkg.nominal;
   c.out = calibration::twenty_four_position(rec.samples, test::stations_of(rec), opt);

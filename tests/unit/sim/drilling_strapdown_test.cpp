@@ -10,6 +10,7 @@
 
 #include "plumb/core/attitude.hpp"
 #include "plumb/sim/drilling.hpp"
+#include "error_free.hpp"
 #include "strapdown_reference.hpp"
 
 namespace plumb::sim {
@@ -51,13 +52,6 @@ Residual integrate(const DrillingScenario& scenario) {
   return r;
 }
 
-DrillingScenario error_free(DrillingScenario s) {
-  s.grade = ImuGrade::perfect();
-  s.magnetometer.sigma_uT = 0;
-  s.vibration = Vibration{};
-  return s;
-}
-
 // The reference run (16 min, 32 m, two rotary segments of 160 s at 30 rpm) at 100 Hz. Measured:
 // attitude 2.87e-5 deg at the end (and at most), position 0.46 m, velocity 1.8e-3 m/s.
 // The attitude residual is the RK4 phase error of the toolface spin: the normalised RK4 of the
@@ -68,7 +62,7 @@ DrillingScenario error_free(DrillingScenario s) {
 // position residual. Both scale as dt^4 (next test: 1.8e-6 deg, 0.029 m at 200 Hz), so they are the
 // integrator's, not the simulator's. (At 10 Hz the same integrator leaves 0.29 deg and 4.6 km.)
 TEST(DrillingStrapdown, ErrorFreeImuReturnsTheTruthOnTheReferenceRun) {
-  const Residual r = integrate(error_free(DrillingScenario::reference(ImuGrade::perfect(), 100)));
+  const Residual r = integrate(test::error_free(DrillingScenario::reference(ImuGrade::perfect(), 100)));
   EXPECT_LT(r.max_attitude_deg, 4e-5);
   EXPECT_LT(r.position_m, 0.6);
   EXPECT_LT(r.velocity_mps, 2.5e-3);
@@ -77,8 +71,8 @@ TEST(DrillingStrapdown, ErrorFreeImuReturnsTheTruthOnTheReferenceRun) {
 // Doubling the rate divides the residual by 2^4 = 16 for a fourth-order integrator: what remains
 // is integration error, which vanishes with the step; a simulator inconsistency would not.
 TEST(DrillingStrapdown, ResidualShrinksAsTheFourthPowerOfTheStep) {
-  const Residual r100 = integrate(error_free(DrillingScenario::reference(ImuGrade::perfect(), 100)));
-  const Residual r200 = integrate(error_free(DrillingScenario::reference(ImuGrade::perfect(), 200)));
+  const Residual r100 = integrate(test::error_free(DrillingScenario::reference(ImuGrade::perfect(), 100)));
+  const Residual r200 = integrate(test::error_free(DrillingScenario::reference(ImuGrade::perfect(), 200)));
   EXPECT_GT(r100.attitude_deg / r200.attitude_deg, 12.0);
   EXPECT_LT(r100.attitude_deg / r200.attitude_deg, 20.0);
   EXPECT_GT(r100.position_m / r200.position_m, 12.0);
@@ -90,7 +84,7 @@ TEST(DrillingStrapdown, ResidualShrinksAsTheFourthPowerOfTheStep) {
 // 1.1e-4 m. The position residual comes from the cubic midpoint of f at the 16 ends of the speed
 // ramps, where the jerk steps (the raised cosine keeps speed and acceleration continuous, not jerk).
 TEST(DrillingStrapdown, SlidingRunReturnsTheTruthToATenthOfAMillimetre) {
-  DrillingScenario s = error_free(DrillingScenario::reference(ImuGrade::perfect(), 100));
+  DrillingScenario s = test::error_free(DrillingScenario::reference(ImuGrade::perfect(), 100));
   for (auto& seg : s.plan.segments) {
     seg.mode = SteeringMode::Sliding;
     seg.rpm = 0;

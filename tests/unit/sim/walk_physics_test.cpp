@@ -8,15 +8,10 @@
 
 #include "plumb/core/attitude.hpp"
 #include "plumb/sim/walk.hpp"
+#include "error_free.hpp"
 
 namespace plumb::sim {
 namespace {
-
-WalkScenario error_free(WalkScenario s) {
-  s.grade = ImuGrade::perfect();
-  s.mag_sigma_uT = 0;
-  return s;
-}
 
 Eigen::Matrix3d skew(const Eigen::Vector3d& w) {
   Eigen::Matrix3d m;
@@ -52,7 +47,7 @@ TEST(WalkPhysics, RatesAreTheDerivativesOfAttitudeAndPosition) {
 // Between swings the state is a footprint's: no velocity, no acceleration, no rotation, so an
 // error-free IMU reads exactly the earth rate and -G, and the truth does not move at all.
 TEST(WalkPhysics, StanceIsExactlyStill) {
-  const WalkScenario scenario = error_free(WalkScenario::loop_25m());
+  const WalkScenario scenario = test::error_free(WalkScenario::loop_25m());
   WalkSimulator sim(scenario);
   std::vector<TruthSample> truth;
   const std::vector<Sample> s = sim.run(&truth);
@@ -114,7 +109,7 @@ TEST(WalkPhysics, StancesLastFromFiftyToThreeHundredMilliseconds) {
 // The loop closes exactly: the last footprint is the first, with the heading one turn further.
 TEST(WalkPhysics, TheLoopCloses) {
   for (const WalkScenario& scenario : {WalkScenario::loop_25m(), WalkScenario::loop_60m()}) {
-    WalkSimulator sim(error_free(scenario));
+    WalkSimulator sim(test::error_free(scenario));
     std::vector<TruthSample> truth;
     sim.run(&truth);
     const TruthSample &start = truth.front(), &end = truth.back();

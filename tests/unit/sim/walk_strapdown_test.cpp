@@ -9,19 +9,20 @@
 
 #include "plumb/core/attitude.hpp"
 #include "plumb/sim/walk.hpp"
+#include "error_free.hpp"
 #include "strapdown_reference.hpp"
 
 namespace plumb::sim {
 namespace {
 
-struct Residual {
+struct WalkResidual {
   double max_attitude_deg = 0;
   double max_position_m = 0;   // at the footprints, where the truth stands still
   double end_position_m = 0;
   double end_velocity_mps = 0;
 };
 
-Residual integrate(const WalkScenario& scenario) {
+WalkResidual integrate(const WalkScenario& scenario) {
   WalkSimulator sim(scenario);
   std::vector<TruthSample> truth;
   const std::vector<Sample> s = sim.run(&truth);
@@ -30,7 +31,7 @@ Residual integrate(const WalkScenario& scenario) {
   const Eigen::Vector3d g_n(0.0, 0.0, scenario.g);
   const WalkState start = sim.path().at(0.0);
   test::NavState x{Eigen::Quaterniond(Eigen::Matrix3d(start.c_nb.transpose())), start.velocity, start.position};
-  Residual r;
+  WalkResidual r;
   for (std::size_t k = 0; k + 1 < s.size(); ++k) {
     test::strapdown_step(x, s, k, dt, w_ie, g_n);
     const TruthSample& tr = truth[k + 1];
@@ -47,12 +48,6 @@ Residual integrate(const WalkScenario& scenario) {
   return r;
 }
 
-WalkScenario error_free(WalkScenario s) {
-  s.grade = ImuGrade::perfect();
-  s.mag_sigma_uT = 0;
-  return s;
-}
-
 // Measured at 400 Hz (seed 1), largest over the run (attitude and position sampled every 20th step):
 //   25 m loop (33 s):                attitude 1.7e-6 deg, position 2.0e-5 m, end velocity 2.0e-6 m/s;
 //   60 m loop with stairs (67 s):    attitude 2.5e-6 deg, position 1.9e-4 m, end velocity 9.2e-6 m/s.
@@ -64,11 +59,11 @@ WalkScenario error_free(WalkScenario s) {
 // measured; 25 m: 9.81 x 3e-8 x 33^2 / 6 = 5e-5 m against 2e-5). The bounds below are twice the
 // measured values; the tolerance, 0.3 % of the distance (75 and 180 mm), is 1000 times more.
 TEST(WalkStrapdown, ErrorFreeImuReturnsTheTruthAroundTheLoops) {
-  const Residual r25 = integrate(error_free(WalkScenario::loop_25m()));
+  const WalkResidual r25 = integrate(test::error_free(WalkScenario::loop_25m()));
   EXPECT_LT(r25.max_attitude_deg, 4e-6);
   EXPECT_LT(r25.max_position_m, 5e-5);
   EXPECT_LT(r25.end_velocity_mps, 5e-6);
-  const Residual r60 = integrate(error_free(WalkScenario::loop_60m()));
+  const WalkResidual r60 = integrate(test::error_free(WalkScenario::loop_60m()));
   EXPECT_LT(r60.max_attitude_deg, 5e-6);
   EXPECT_LT(r60.max_position_m, 4e-4);
   EXPECT_LT(r60.end_position_m, 4e-4);
@@ -80,8 +75,8 @@ TEST(WalkStrapdown, ErrorFreeImuReturnsTheTruthAroundTheLoops) {
 // from 200 to 400 Hz: / 14.3 and / 10.3), near the 2^4 = 16 of a fourth-order integrator; an
 // inconsistency of the simulator (a missing Coriolis or earth-rate term, a wrong rate) would stay.
 TEST(WalkStrapdown, ResidualShrinksAsTheStepShrinks) {
-  const Residual r400 = integrate(error_free(WalkScenario::loop_60m(ImuGrade::perfect(), 400)));
-  const Residual r800 = integrate(error_free(WalkScenario::loop_60m(ImuGrade::perfect(), 800)));
+  const WalkResidual r400 = integrate(test::error_free(WalkScenario::loop_60m(ImuGrade::perfect(), 400)));
+  const WalkResidual r800 = integrate(test::error_free(WalkScenario::loop_60m(ImuGrade::perfect(), 800)));
   EXPECT_GT(r400.max_attitude_deg / r800.max_attitude_deg, 10.0);
   EXPECT_GT(r400.end_position_m / r800.end_position_m, 8.0);
   EXPECT_LT(r800.end_position_m, 3e-5);

@@ -11,12 +11,12 @@
 namespace plumb::strapdown::test {
 namespace {
 
-constexpr int kSeeds = 20;
+constexpr int kReferenceRunSeeds = 20;
 
 void sweep(const char* grade, double rate_hz) {
   double z2[3] = {0, 0, 0}, n[3] = {0, 0, 0};
   double worst = 0;
-  for (int seed = 1; seed <= kSeeds; ++seed) {
+  for (int seed = 1; seed <= kReferenceRunSeeds; ++seed) {
     const RunMetrics m = run_drilling(sim::ImuGrade::named(grade), rate_hz, static_cast<std::uint64_t>(seed));
     for (int a = 0; a < 3; ++a) {
       z2[a] += m.sum_z2_angle[a];
@@ -28,7 +28,7 @@ void sweep(const char* grade, double rate_hz) {
   for (int a = 0; a < 3; ++a) {
     const double rms = std::sqrt(z2[a] / n[a]);
     std::printf("%s %.0f Hz %s RMS(error/sigma) %.2f over %d seeds; worst attitude error %.3f deg\n", grade, rate_hz,
-                names[a], rms, kSeeds, worst);
+                names[a], rms, kReferenceRunSeeds, worst);
     EXPECT_GE(rms, 0.7) << grade << " " << rate_hz << " " << names[a];
     EXPECT_LE(rms, 1.5) << grade << " " << rate_hz << " " << names[a];
   }
@@ -44,7 +44,7 @@ TEST(StrapdownMonteCarlo, SigmaHonestMems10Hz) { sweep("mems", 10); }
 // 56x too small and the second 2x; MEMS at 10 Hz keeps the 20 runs short.
 double inclination_coverage(const std::function<void(const sim::DrillingScenario&, estimator::Parameters&)>& gravity) {
   double z2 = 0, n = 0;
-  for (int seed = 1; seed <= kSeeds; ++seed) {
+  for (int seed = 1; seed <= kReferenceRunSeeds; ++seed) {
     const auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::mems(), 10, static_cast<std::uint64_t>(seed));
     auto params = parameters_for(scenario);
     gravity(scenario, params);
@@ -61,7 +61,7 @@ TEST(StrapdownMonteCarlo, InclinationSigmaHonestWithGravityOffOrLearnt) {
     p["gravity_sd"] = "0.005";
   });
   const double learnt = inclination_coverage([](const sim::DrillingScenario&, estimator::Parameters& p) { p.erase("gravity"); });
-  std::printf("inclination RMS(error/sigma): gravity 0.005 m/s^2 off %.2f, learnt %.2f (%d seeds)\n", off, learnt, kSeeds);
+  std::printf("inclination RMS(error/sigma): gravity 0.005 m/s^2 off %.2f, learnt %.2f (%d seeds)\n", off, learnt, kReferenceRunSeeds);
   EXPECT_GE(off, 0.7);
   EXPECT_LE(off, 1.5);
   EXPECT_GE(learnt, 0.7);
@@ -71,7 +71,7 @@ TEST(StrapdownMonteCarlo, InclinationSigmaHonestWithGravityOffOrLearnt) {
 TEST(StrapdownMonteCarlo, NoMagnetometerAzimuthDriftInsideTwoSigma) {
   int inside = 0;
   double worst_inc = 0;
-  for (int seed = 1; seed <= kSeeds; ++seed) {
+  for (int seed = 1; seed <= kReferenceRunSeeds; ++seed) {
     auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 100, static_cast<std::uint64_t>(seed));
     scenario.magnetometer.present = false;
     auto params = parameters_for(scenario);
@@ -82,8 +82,8 @@ TEST(StrapdownMonteCarlo, NoMagnetometerAzimuthDriftInsideTwoSigma) {
     worst_inc = std::max(worst_inc, m.max_inc_err_deg);
   }
   std::printf("no magnetometer: azimuth drift inside 2 sigma in %d of %d runs; worst inclination error %.3f deg\n",
-              inside, kSeeds, worst_inc);
-  EXPECT_GE(inside, kSeeds * 85 / 100);
+              inside, kReferenceRunSeeds, worst_inc);
+  EXPECT_GE(inside, kReferenceRunSeeds * 85 / 100);
   EXPECT_LE(worst_inc, 0.2);
 }
 

@@ -23,7 +23,7 @@ StillnessState decision(double t, double confirm_t, double end_t) {
   return s;
 }
 
-std::vector<StillnessLag::Entry> run(double lag_s, double confirm_t, double end_t, double until_t) {
+std::vector<StillnessLag::Entry> pass_through_lag(double lag_s, double confirm_t, double end_t, double until_t) {
   StillnessLag lag;
   lag.reset(lag_s);
   std::vector<StillnessLag::Entry> passed;
@@ -68,7 +68,7 @@ TEST(StillnessLag, WithoutLagEveryReadingPassesAsJudged) {
   ASSERT_TRUE(e);
   EXPECT_TRUE(e->still.started);
   EXPECT_FALSE(lag.pop_ready());
-  const Seen s = seen(run(0, 2, 8, 12));
+  const Seen s = seen(pass_through_lag(0, 2, 8, 12));
   EXPECT_EQ(s.still, 48);
   EXPECT_NEAR(s.end_t, 8, 1e-9);
 }
@@ -91,7 +91,7 @@ TEST(StillnessLag, ReadingsWaitTheLag) {
 }
 
 TEST(StillnessLag, AStopThatEndsTakesBackItsLastLagSeconds) {
-  const Seen s = seen(run(2, 2, 8, 12));
+  const Seen s = seen(pass_through_lag(2, 2, 8, 12));
   EXPECT_EQ(s.started, 1);
   EXPECT_NEAR(s.start_t, 2, 1e-9);
   EXPECT_EQ(s.ended, 1);
@@ -102,7 +102,7 @@ TEST(StillnessLag, AStopThatEndsTakesBackItsLastLagSeconds) {
 }
 
 TEST(StillnessLag, AStopShorterThanTheLagVanishes) {
-  const Seen s = seen(run(2, 2, 3.5, 12));
+  const Seen s = seen(pass_through_lag(2, 2, 3.5, 12));
   EXPECT_EQ(s.started, 0);
   EXPECT_EQ(s.ended, 0);
   EXPECT_EQ(s.still, 0);
@@ -110,7 +110,7 @@ TEST(StillnessLag, AStopShorterThanTheLagVanishes) {
 
 TEST(StillnessLag, TheEndOfDataDrainsWithTheDecisionsKnown) {
   // Still to the last reading: nothing took it back, every waiting reading is still.
-  const Seen s = seen(run(2, 2, 100, 12));
+  const Seen s = seen(pass_through_lag(2, 2, 100, 12));
   EXPECT_EQ(s.started, 1);
   EXPECT_EQ(s.ended, 0);
   EXPECT_EQ(s.still, 81);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "plumb/core/number.hpp"
+#include "plumb/core/trim.hpp"
 
 namespace plumb::csv {
 
@@ -20,7 +21,7 @@ namespace {
 constexpr std::string_view kFormatName = "plumb-calibration";
 constexpr int kNewestVersion = 2;
 
-void write_number(std::ostream& out, double x) {
+void write_exact(std::ostream& out, double x) {
   // Shortest representation that reads back to the same double: exact round trip.
   char buf[64];
   const auto r = std::to_chars(buf, buf + sizeof buf, x);
@@ -30,7 +31,7 @@ void write_number(std::ostream& out, double x) {
 template <typename Vec>
 void write_values(std::ostream& out, std::string_view key, const Vec& values) {
   out << key;
-  for (double x : values) out << ' ', write_number(out, x);
+  for (double x : values) out << ' ', write_exact(out, x);
   out << '\n';
 }
 
@@ -72,13 +73,6 @@ std::string text_value(std::string s) {
   const auto b = s.find_first_not_of(" \t");
   if (b == std::string::npos) return {};
   return s.substr(b, s.find_last_not_of(" \t") - b + 1);
-}
-
-std::string trim(std::string_view s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string_view::npos) return {};
-  const auto e = s.find_last_not_of(" \t\r");
-  return std::string(s.substr(b, e - b + 1));
 }
 
 // Parses one line's values and reports problems with the file name and line number.

@@ -8,6 +8,7 @@
 #include <iomanip>
 
 #include "plumb/core/number.hpp"
+#include "plumb/core/trim.hpp"
 
 namespace plumb::csv {
 namespace {
@@ -16,12 +17,6 @@ std::string describe(const std::string& source, std::size_t line, const std::str
   std::string s = source + ":" + std::to_string(line) + ": ";
   if (!column.empty()) s += "column '" + column + "': ";
   return s + what;
-}
-
-std::string trim(const std::string& f) {
-  const auto b = f.find_first_not_of(" \t\r");
-  const auto e = f.find_last_not_of(" \t\r");
-  return b == std::string::npos ? std::string() : f.substr(b, e - b + 1);
 }
 
 // RFC 4180 within one line: a field whose first non-blank character is '"' runs to the next lone

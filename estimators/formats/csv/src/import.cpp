@@ -12,6 +12,7 @@
 
 #include "plumb/core/edit_distance.hpp"
 #include "plumb/core/number.hpp"
+#include "plumb/core/trim.hpp"
 
 namespace plumb::csv {
 namespace {
@@ -31,12 +32,6 @@ const std::vector<UnitName> kMag = {{"uT", 1.0},  {"\xC2\xB5T", 1.0}, {"\xCE\xBC
                                     {"nT", 1e-3}, {"mT", 1e3},        {"gauss", 100.0}};
 const std::vector<UnitName> kTime = {{"s", 1.0}, {"ms", 1e-3}, {"us", 1e-6}, {"\xC2\xB5s", 1e-6}, {"ns", 1e-9}};
 const std::vector<UnitName> kDepth = {{"m", 1.0}, {"ft", 0.3048}};
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return {};
-  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
-}
 
 std::string join(const std::vector<std::string>& items, const char* sep = ", ") {
   std::string out;

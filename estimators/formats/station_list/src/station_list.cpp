@@ -9,16 +9,11 @@
 #include <sstream>
 
 #include "plumb/core/number.hpp"
+#include "plumb/core/trim.hpp"
 
 namespace plumb::calibration {
 
 namespace {
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return {};
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
 
 std::vector<std::string> split(const std::string& line, char sep) {
   std::vector<std::string> out;

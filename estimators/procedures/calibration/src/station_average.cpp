@@ -35,7 +35,7 @@ struct Block {
   Channels sd = Channels::Zero();
 };
 
-double median(std::vector<double> v) {
+double upper_median(std::vector<double> v) {
   if (v.empty()) return 0;
   std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
   return v[v.size() / 2];
@@ -58,8 +58,8 @@ double channel_tolerance(const std::vector<Block>& blocks, int c, double k_sigma
   // the readings, which a slow drift does not inflate.
   for (std::size_t k = 2; k < blocks.size(); ++k)
     d2.push_back(std::abs(blocks[k].mean[c] - 2 * blocks[k - 1].mean[c] + blocks[k - 2].mean[c]));
-  const double from_d2 = d2.empty() ? 0.0 : median(d2) / (0.6745 * std::sqrt(6.0));
-  const double tol = std::max(k_sigma * std::max(median(se), from_d2), floor);
+  const double from_d2 = d2.empty() ? 0.0 : upper_median(d2) / (0.6745 * std::sqrt(6.0));
+  const double tol = std::max(k_sigma * std::max(upper_median(se), from_d2), floor);
   return tol > 0 ? tol : 1e-12;  // a noise-free channel must repeat exactly
 }
 
@@ -148,7 +148,7 @@ Motion motion_tolerances(const std::vector<const Sample*>& usable, const std::ve
     for (const auto& b : blocks) sds.push_back(b.sd[c]);
     // Counted outputs can show no scatter inside most readings: the reading-to-reading noise,
     // scaled to one sample, is the floor.
-    m.sample_sd[c] = std::max({median(sds), m.tol[c] / options.k_sigma * std::sqrt(n_block), 0.5 * m.quantum[c]});
+    m.sample_sd[c] = std::max({upper_median(sds), m.tol[c] / options.k_sigma * std::sqrt(n_block), 0.5 * m.quantum[c]});
   }
   return m;
 }

@@ -9,6 +9,7 @@ namespace plumb {
 
 inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr double kDeg = kPi / 180.0;
+inline constexpr double kRpm = kPi / 30.0;  // rad/s of one revolution per minute
 
 // Wraps an angle to [0, 360).
 double wrap_deg_360(double deg);
