@@ -73,21 +73,28 @@ double course_coefficient(const std::vector<Rad>& s, std::size_t k) {
 }
 
 // Near vertical the azimuth-dependent terms take the model's vertical form: the error moves the
-// station sideways by the course length around it.
+// station sideways by the course length around it. A station's own effect ("star") is the half
+// course ending at it, whether or not a station follows: the newest station of a live survey has
+// no course after it yet, and its covariance must not change when the next one comes (the around
+// of the last station is never used: nothing lies below it).
 void vertical_form(const std::vector<Rad>& s, std::size_t k, const detail::WeightFunction& wf, double mag,
                    const Field& field, int revision, TermEffect& e) {
   const std::size_t n = s.size();
   const bool last = k + 1 == n;
-  const double around = last ? 0.0 : (s[k + 1].md - s[k - 1].md) / 2;
   const double own = (s[k].md - s[k - 1].md) / 2;
+  const double around = last ? own : (s[k + 1].md - s[k - 1].md) / 2;
+  // The first course counted whole against the first station (revision 5; and the XYM3E/XYM4E
+  // course-length weighting, which only revision 5 has).
+  const double first_own = 2 * own;
+  const double first_around = last ? first_own : (s[2].md + s[1].md - 2 * s[0].md) / 2;
   if (wf.vertical == Vertical::AccelerometerXY) {
     const double g = mag / field.gravity_mps2;
     const Vector3d side(-std::sin(s[k].azi), std::cos(s[k].azi), 0);
-    e.full[k] = last ? Vector3d::Zero() : Vector3d(around * g * side);
-    e.star[k] = last ? Vector3d::Zero() : Vector3d(own * g * side);
-    if (revision >= 5 && k == 1 && n > 2) {
-      e.full[k](1) = (s[2].md + s[1].md - 2 * s[0].md) / 2 * g * std::cos(s[1].azi);
-      e.star[k](1) = (s[1].md - s[0].md) * g * std::cos(s[1].azi);
+    e.full[k] = around * g * side;
+    e.star[k] = own * g * side;
+    if (revision >= 5 && k == 1) {
+      e.full[k](1) = first_around * g * std::cos(s[1].azi);
+      e.star[k](1) = first_own * g * std::cos(s[1].azi);
     }
     return;
   }
@@ -95,14 +102,13 @@ void vertical_form(const std::vector<Rad>& s, std::size_t k, const detail::Weigh
   e.full[k].setZero();
   e.star[k].setZero();
   if (wf.course_coefficient) {
+    // The coefficient scales the station's error, so its own course as well as the one after it.
     const double c = course_coefficient(s, k);
-    double full = last ? c * (s[k].md - s[k - 1].md) / 2 : c * around;
-    if (k == 1 && n > 2) full = c * (s[2].md + s[1].md - 2 * s[0].md) / 2;
-    e.full[k](axis) = full * mag;
-    e.star[k](axis) = (k == 1 ? 2 * own : own) * mag;
+    e.full[k](axis) = c * (k == 1 ? first_around : around) * mag;
+    e.star[k](axis) = c * (k == 1 ? first_own : own) * mag;
   } else {
     e.full[k](axis) = around * mag;
-    e.star[k](axis) = last ? 0.0 : own * mag;
+    e.star[k](axis) = own * mag;
   }
 }
 
