@@ -55,6 +55,11 @@ V msz(const WeightContext& c) {
   const double si = std::sin(c.inc);
   return {0, 0, -(si * std::cos(c.azm) + std::tan(c.dip) * std::cos(c.inc)) * si * std::sin(c.azm)};
 }
+// A gyro tool's accelerometer triad (the ISCWSA gyro model, SPE 90408): misalignment, scale factor
+// (the model's 1.3 sin I cos I) and the z accelerometer's bias (the closed form's dI = -b sinI / g).
+V axyz_mis(const WeightContext&) { return {0, 1, 0}; }
+V axyz_sf(const WeightContext& c) { return {0, 1.3 * std::sin(c.inc) * std::cos(c.inc), 0}; }
+V axyz_zb(const WeightContext& c) { return {0, std::sin(c.inc) / c.gravity, 0}; }
 // Depth.
 V dref(const WeightContext&) { return {1, 0, 0}; }
 V dsf(const WeightContext& c) { return {c.md, 0, 0}; }
@@ -87,6 +92,7 @@ WeightFunction weight_function(const std::string& name) {
       {"MBXY-TI1", {mbxy_ti1}}, {"MBXY-TI2", {mbxy_ti2}}, {"MBZ", {mbz}},
       {"MSXY-TI1", {msxy_ti1}}, {"MSXY-TI2", {msxy_ti2}}, {"MSXY-TI3", {msxy_ti3}}, {"MSZ", {msz}},
       {"AZ", {az}}, {"DBH", {dbh}}, {"AMIL", {amil}},
+      {"AXYZ-MIS", {axyz_mis}}, {"AXYZ-SF", {axyz_sf}}, {"AXYZ-ZB", {axyz_zb}},
       {"SAG", {sag}}, {"SAGE", {sage}}, {"XYM1", {xym1}}, {"XYM2", {xym2}},
       {"XYM3", {xym3, Vertical::MisalignmentNorth}}, {"XYM4", {xym4, Vertical::MisalignmentEast}},
       // Revision 5's course-length-weighted misalignments (the workbooks call them XYM3L, XYM4L).

@@ -1,6 +1,7 @@
 // The weighting functions of the ISCWSA MWD model: the change of (MD, I, A) per unit of a term's
 // magnitude at one station (SPE 67616 Table 1, SPE 63275 for the toolface-independent x-y terms,
-// the revision 5 sheets for SAGE, XYM3E and XYM4E). Internal to iscwsa.cpp.
+// the revision 5 sheets for SAGE, XYM3E and XYM4E; the gyro model's accelerometer triad). Internal
+// to iscwsa.cpp; the gyro's own terms are in iscwsa_gyro.hpp.
 #pragma once
 
 #include <string>

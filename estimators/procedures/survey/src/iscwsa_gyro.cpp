@@ -1,0 +1,124 @@
+#include "iscwsa_gyro.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace plumb::survey::iscwsa::detail {
+namespace {
+
+constexpr double kRad = 3.14159265358979323846 / 180.0;
+// The earth's rate, rad/h (7.292115e-5 rad/s): the gyrocompass measures its horizontal part.
+constexpr double kEarthRateRadPerHour = 7.292115e-5 * 3600.0;
+
+bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+
+// The change of azimuth per rad/h of the gyro error at a gyrocompass station. A gyrocompass reads
+// the earth's rate on the x-y gyros; the high-side (h) and lateral (l) parts of the horizontal
+// rate give A = atan2(-l cosI, h - Omega sinI sin(lat)), whose derivatives are B1 (an error on the
+// high-side rate) and B2 (on the lateral rate). G1 and G4 are the lateral and high-side gyros'
+// errors proportional to the gravity along the high side (g sinI per g: mass unbalance and its
+// quadrature); RN is noise on both axes.
+double gyrocompass_weight(const std::string& wf, double inc, double azi, double horizontal_rate, double nrf) {
+  const double si = std::sin(inc), ci = std::cos(inc), sa = std::sin(azi), ca = std::cos(azi);
+  if (wf == "GXY-B1") return sa / (horizontal_rate * ci);
+  if (wf == "GXY-B2") return ca / horizontal_rate;
+  if (wf == "GXY-G1") return ca * si / horizontal_rate;
+  if (wf == "GXY-G4") return sa * std::tan(inc) / horizontal_rate;
+  return nrf * std::sqrt(1 - ca * ca * si * si) / (horizontal_rate * ci);  // GXY-RN
+}
+
+// How much of the azimuth rate the gyros that run continuously miss in a course of mean
+// inclination `inc`: x-y gyros see the turn about the vertical through sinI, a z gyro through
+// cosI, a triad whole.
+double continuous_factor(const std::string& wf, double inc) {
+  if (starts_with(wf, "GXYZ-")) return 1.0;
+  if (starts_with(wf, "GXY-")) return 1.0 / std::sin(inc);
+  return 1.0 / std::abs(std::cos(inc));  // GZ-
+}
+
+bool within(double inc, double from_deg, double to_deg) { return inc >= from_deg * kRad && inc <= to_deg * kRad; }
+
+// Hours between two stations: the course over the running speed, or the stations' own times.
+double hours(const GyroStation& a, const GyroStation& b, std::size_t k, const GyroRunning& r) {
+  if (r.running_speed_m_per_h > 0) return (b.md - a.md) / r.running_speed_m_per_h;
+  const double dt = b.t_s - a.t_s;
+  if (!(dt >= 0))
+    throw std::invalid_argument("gyro model: the continuous terms time the drift by the stations' times, and station " +
+                                std::to_string(k) + "'s does not follow station " + std::to_string(k - 1) +
+                                "'s; give each station its time or the tool code a running speed");
+  return dt / 3600.0;
+}
+
+}  // namespace
+
+GyroKind gyro_kind(const std::string& wf) {
+  if (wf == "GXY-B1" || wf == "GXY-B2" || wf == "GXY-G1" || wf == "GXY-G4" || wf == "GXY-RN") return GyroKind::Stationary;
+  if (wf == "GXY-GD" || wf == "GXYZ-GD" || wf == "GZ-GD") return GyroKind::Drift;
+  if (wf == "GXY-GRW" || wf == "GXYZ-GRW" || wf == "GZ-GRW") return GyroKind::RandomWalk;
+  if (wf == "EXT-REF" || wf == "EXT-TIE") return GyroKind::Reference;
+  return GyroKind::None;
+}
+
+GyroEffect gyro_term(const std::vector<GyroStation>& s, const Term& term, double mag, const GyroRunning& r,
+                     const Field& field) {
+  const std::size_t n = s.size();
+  const bool random = term.propagation == Propagation::Random;
+  GyroEffect e{std::vector<Eigen::Vector3d>(n, Eigen::Vector3d::Zero()), std::vector<int>(n, 0)};
+  for (std::size_t k = 0; k < n; ++k) e.group[k] = random ? static_cast<int>(k) : 0;
+  // The continuous run starts at the first station in its inclination range and goes on to the
+  // end (one initialisation); the stations before it are gyrocompassed where the static range
+  // holds them. A gyrocompass initialises the run at the last static station before it, or at
+  // the run's first station when there is none.
+  std::size_t c0 = n;
+  if (r.continuous)
+    for (std::size_t k = 0; k < n && c0 == n; ++k)
+      if (within(s[k].inc, r.continuous_start_inc_deg, r.continuous_end_inc_deg)) c0 = k;
+  const auto stationary = [&](std::size_t k) {
+    return k < c0 && within(s[k].inc, r.static_start_inc_deg, r.static_end_inc_deg);
+  };
+  const std::size_t i0 = c0 < n && c0 > 0 && stationary(c0 - 1) ? c0 - 1 : c0;
+  const bool gyrocompass_init = r.initialisation == GyroInitialisation::Gyrocompass;
+  const GyroKind kind = gyro_kind(term.weight_function);
+
+  if (kind == GyroKind::Stationary) {
+    if (!std::isfinite(field.latitude_deg))
+      throw std::invalid_argument("gyro model: term " + term.code + " is a gyrocompass's and needs the well's latitude");
+    const double horizontal_rate = kEarthRateRadPerHour * std::cos(field.latitude_deg * kRad);
+    const auto weight = [&](std::size_t k) {
+      const double w = gyrocompass_weight(term.weight_function, s[k].inc, s[k].azi, horizontal_rate, r.noise_reduction_factor);
+      return std::isfinite(w) ? w * mag : 0.0;  // horizontal: out of an x-y gyrocompass's range
+    };
+    for (std::size_t k = 0; k < c0; ++k)
+      if (stationary(k)) e.dia[k](2) = weight(k);
+    if (c0 < n && gyrocompass_init) {
+      // The run keeps the azimuth error of its initialisation: one draw, held to the end.
+      const double held = weight(i0);
+      for (std::size_t k = c0; k < n; ++k) {
+        e.dia[k](2) = held;
+        if (random) e.group[k] = static_cast<int>(i0);
+      }
+    }
+    return e;
+  }
+  if (kind == GyroKind::Reference) {
+    for (std::size_t k = c0; k < n; ++k) e.dia[k](2) = mag;
+    return e;
+  }
+  // Drift and random walk: from the initialisation on, a bias b gives an azimuth error b t / sinI
+  // (x-y gyros) after t hours, a random walk q gives q sqrt(t) / sinI; course by course, at the
+  // course's mean inclination.
+  double accumulated = 0;
+  for (std::size_t k = i0 + 1; k < n; ++k) {
+    const double f = continuous_factor(term.weight_function, (s[k].inc + s[k - 1].inc) / 2);
+    const double t = hours(s[k - 1], s[k], k, r);
+    accumulated = kind == GyroKind::Drift ? accumulated + t * f : std::sqrt(accumulated * accumulated + t * f * f);
+    if (!std::isfinite(accumulated))
+      throw std::invalid_argument("gyro model: term " + term.code + " runs x-y gyros (or a z gyro) continuously through a "
+                                  "course they cannot see turn (vertical, or horizontal); start the continuous range "
+                                  "where they can");
+    if (k >= c0) e.dia[k](2) = accumulated * mag;
+  }
+  return e;
+}
+
+}  // namespace plumb::survey::iscwsa::detail
