@@ -44,49 +44,85 @@ Field at_latitude(double latitude_deg) {
   return f;
 }
 
-// The gyrocompass: the x-y gyros read the earth's rate; its high-side (h) and lateral (l) parts give
-// the azimuth. Rates in rad/h.
-double gyrocompass_azimuth(double h, double l, double inc, double latitude) {
-  return std::atan2(-l * std::cos(inc), h - kEarthRate * std::sin(inc) * std::sin(latitude));
+// The earth's rate in the tool's axes (x the high side: toolface 0, rad/h), and the gyrocompasses
+// that turn gyro readings into an azimuth: x-y gyros, with the vertical part of the earth's rate
+// known from the latitude; and a triad, rotated level by the inclination.
+Eigen::Vector3d earth_rate_in_tool(double inc, double azi, double lat) {
+  const Eigen::Vector3d level(kEarthRate * std::cos(lat) * std::cos(azi), -kEarthRate * std::cos(lat) * std::sin(azi),
+                              -kEarthRate * std::sin(lat));
+  Eigen::Matrix3d r2;  // docs/conventions.md R2(I)
+  r2 << std::cos(inc), 0, -std::sin(inc), 0, 1, 0, std::sin(inc), 0, std::cos(inc);
+  return r2 * level;
+}
+double xy_gyrocompass(const Eigen::Vector3d& w, double inc, double lat) {
+  return std::atan2(-w.y() * std::cos(inc), w.x() - kEarthRate * std::sin(inc) * std::sin(lat));
+}
+double xyz_gyrocompass(const Eigen::Vector3d& w, double inc, double) {
+  const Eigen::Vector3d level(std::cos(inc) * w.x() + std::sin(inc) * w.z(), w.y(), 0);
+  return std::atan2(-level.y(), level.x());
 }
 
 TEST(IscwsaGyro, GyrocompassTermsAreTheClosedFormsDerivatives) {
   GyroRunning stationary;
   stationary.static_end_inc_deg = 89;
+  const auto wrap = [](double a) { return std::remainder(a, 2 * kPi); };
+  int checked = 0;
   for (double latitude_deg : {20.0, 60.0}) {
     const double lat = latitude_deg * kRadPerDeg;
     for (double inc_deg : {0.0, 10.0, 35.0, 60.0, 80.0}) {
       for (double azi_deg : {0.0, 30.0, 100.0, 200.0, 310.0}) {
         const double inc = inc_deg * kRadPerDeg, azi = azi_deg * kRadPerDeg;
-        const double h = kEarthRate * (std::cos(inc) * std::cos(lat) * std::cos(azi) + std::sin(inc) * std::sin(lat));
-        const double l = -kEarthRate * std::cos(lat) * std::sin(azi);
-        const double step = 1e-7;
-        const auto wrap = [](double a) { return std::remainder(a, 2 * kPi); };
-        const double d_h = wrap(gyrocompass_azimuth(h + step, l, inc, lat) - gyrocompass_azimuth(h - step, l, inc, lat)) / (2 * step);
-        const double d_l = wrap(gyrocompass_azimuth(h, l + step, inc, lat) - gyrocompass_azimuth(h, l - step, inc, lat)) / (2 * step);
-        ASSERT_NEAR(wrap(gyrocompass_azimuth(h, l, inc, lat) - azi), 0, 1e-12);
-        // B1, B2: errors on the high-side and lateral rates; G4, G1: the same gyros' errors per g
-        // of the gravity along the high side (g sinI); RN: noise on both, 0.5 of it left.
+        const double si = std::sin(inc), ci = std::cos(inc);
+        const Eigen::Vector3d w = earth_rate_in_tool(inc, azi, lat);
+        // d(azimuth)/d(rate error) on each gyro axis (x high side, y lateral, z the tool axis).
+        const auto derivatives = [&](double (*compass)(const Eigen::Vector3d&, double, double)) {
+          EXPECT_NEAR(wrap(compass(w, inc, lat) - azi), 0, 1e-12);
+          Eigen::Vector3d d;
+          for (int a = 0; a < 3; ++a) {
+            const Eigen::Vector3d step = 1e-7 * Eigen::Vector3d::Unit(a);
+            d(a) = wrap(compass(w + step, inc, lat) - compass(w - step, inc, lat)) / 2e-7;
+          }
+          return d;
+        };
+        const Eigen::Vector3d xy = derivatives(xy_gyrocompass), xyz = derivatives(xyz_gyrocompass);
+        // Biases (B), errors per g of gravity along the high side (g sinI) and the tool axis
+        // (g cosI) (G), noise on the gyros used (RN), and a scale factor on the x-y gyros (SF).
         const struct {
           const char* wf;
           double expected;
-        } terms[] = {{"GXY-B1", std::abs(d_h)},
-                     {"GXY-B2", std::abs(d_l)},
-                     {"GXY-G4", std::abs(d_h) * std::sin(inc)},
-                     {"GXY-G1", std::abs(d_l) * std::sin(inc)},
-                     {"GXY-RN", 0.5 * std::hypot(d_h, d_l)}};
+        } terms[] = {{"GXY-B1", std::abs(xy.x())},
+                     {"GXY-B2", std::abs(xy.y())},
+                     {"GXY-G1", std::abs(xy.y()) * si},
+                     {"GXY-G2", std::abs(xy.y()) * ci},
+                     {"GXY-G3", std::abs(xy.x()) * ci},
+                     {"GXY-G4", std::abs(xy.x()) * si},
+                     {"GXY-RN", std::hypot(xy.x(), xy.y())},
+                     {"GXY-SF", std::abs(xy.x() * w.x() + xy.y() * w.y())},
+                     {"GXYZ-XYB1", std::abs(xyz.x())},
+                     {"GXYZ-XYB2", std::abs(xyz.y())},
+                     {"GXYZ-ZB", std::abs(xyz.z())},
+                     {"GXYZ-XYG1", std::abs(xyz.y()) * si},
+                     {"GXYZ-XYG2", std::abs(xyz.y()) * ci},
+                     {"GXYZ-XYG3", std::abs(xyz.x()) * ci},
+                     {"GXYZ-XYG4", std::abs(xyz.x()) * si},
+                     {"GXYZ-ZG1", std::abs(xyz.z()) * si},
+                     {"GXYZ-ZG2", std::abs(xyz.z()) * ci},
+                     {"GXYZ-XYRN", std::hypot(xyz.x(), xyz.y())},
+                     {"GXYZ-ZRN", std::abs(xyz.z())}};
         for (const auto& term : terms) {
-          GyroRunning r = stationary;
-          r.noise_reduction_factor = 0.5;
-          const ToolCode tool = one_term(term.wf, 1.0, "deg/hr", Propagation::Systematic, r);
+          // GXY-SF is per unit of scale factor (an error of SF times the rate each gyro reads).
+          const bool sf = std::string(term.wf) == "GXY-SF";
+          const ToolCode tool = one_term(term.wf, 1.0, sf ? "-" : "deg/hr", Propagation::Systematic, stationary);
           const Result res = propagate(stations({{0, inc_deg, azi_deg}, {30, inc_deg, azi_deg}}), tool, at_latitude(latitude_deg));
-          const double per_rad_per_hour = std::sqrt(res.angle_variance[1](1)) / kRadPerDeg;
-          EXPECT_NEAR(per_rad_per_hour, term.expected, 1e-6 * term.expected + 1e-9)
+          const double weight = std::sqrt(res.angle_variance[1](1)) / (sf ? 1.0 : kRadPerDeg);
+          EXPECT_NEAR(weight, term.expected, 1e-6 * term.expected + 1e-9)
               << term.wf << " I " << inc_deg << " A " << azi_deg << " latitude " << latitude_deg;
+          ++checked;
         }
       }
     }
   }
+  EXPECT_EQ(checked, 2 * 5 * 5 * 19);
 }
 
 GyroRunning continuous_from_a_known_azimuth(double running_speed_m_per_h = 0) {

@@ -15,8 +15,8 @@ namespace {
 
 // The gyro model's running (plumb/survey/iscwsa.hpp GyroRunning): "# gyro_static_inc_deg FROM TO",
 // "# gyro_continuous_inc_deg FROM TO" (the tool runs continuously from there), "#
-// gyro_initialisation gyrocompass|reference", "# gyro_running_speed_m_per_h V" (0: the stations'
-// times), "# gyro_noise_reduction_factor V".
+// gyro_initialisation gyrocompass|reference", "# gyro_initialisation_inc_deg V", "#
+// gyro_running_speed_m_per_h V" (0: the stations' times), "# gyro_noise_reduction_factor V".
 void read_gyro_key(GyroRunning& g, const std::string& key, const std::string& value, const std::string& second,
                    const std::string& where) {
   const auto number = [&](const std::string& text, bool positive) {
@@ -37,13 +37,16 @@ void read_gyro_key(GyroRunning& g, const std::string& key, const std::string& va
     if (value == "gyrocompass") g.initialisation = GyroInitialisation::Gyrocompass;
     else if (value == "reference") g.initialisation = GyroInitialisation::Reference;
     else throw std::runtime_error(where + key + ": '" + value + "' is not gyrocompass or reference");
+  } else if (key == "gyro_initialisation_inc_deg") {
+    g.initialisation_inc_deg = number(value, false);
   } else if (key == "gyro_running_speed_m_per_h") {
     g.running_speed_m_per_h = number(value, false);
   } else if (key == "gyro_noise_reduction_factor") {
     g.noise_reduction_factor = number(value, true);
   } else {
     throw std::runtime_error(where + "unknown gyro key '" + key + "' (gyro_static_inc_deg, gyro_continuous_inc_deg, "
-                             "gyro_initialisation, gyro_running_speed_m_per_h, gyro_noise_reduction_factor)");
+                             "gyro_initialisation, gyro_initialisation_inc_deg, gyro_running_speed_m_per_h, "
+                             "gyro_noise_reduction_factor)");
   }
 }
 

@@ -1,6 +1,7 @@
 #include "iscwsa_gyro.hpp"
 
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 namespace plumb::survey::iscwsa::detail {
@@ -12,19 +13,49 @@ constexpr double kEarthRateRadPerHour = 7.292115e-5 * 3600.0;
 
 bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 
-// The change of azimuth per rad/h of the gyro error at a gyrocompass station. A gyrocompass reads
-// the earth's rate on the x-y gyros; the high-side (h) and lateral (l) parts of the horizontal
-// rate give A = atan2(-l cosI, h - Omega sinI sin(lat)), whose derivatives are B1 (an error on the
-// high-side rate) and B2 (on the lateral rate). G1 and G4 are the lateral and high-side gyros'
-// errors proportional to the gravity along the high side (g sinI per g: mass unbalance and its
-// quadrature); RN is noise on both axes.
-double gyrocompass_weight(const std::string& wf, double inc, double azi, double horizontal_rate, double nrf) {
-  const double si = std::sin(inc), ci = std::cos(inc), sa = std::sin(azi), ca = std::cos(azi);
-  if (wf == "GXY-B1") return sa / (horizontal_rate * ci);
-  if (wf == "GXY-B2") return ca / horizontal_rate;
-  if (wf == "GXY-G1") return ca * si / horizontal_rate;
-  if (wf == "GXY-G4") return sa * std::tan(inc) / horizontal_rate;
-  return nrf * std::sqrt(1 - ca * ca * si * si) / (horizontal_rate * ci);  // GXY-RN
+// A gyrocompass's terms (SPE 90408 Tables 3 and 4): the change of azimuth at a station, per rad/h
+// of the gyro error (divided by the horizontal earth rate Omega cos(lat)), per unit of scale
+// factor, or per rad of misalignment. A gyrocompass reads the earth's rate on the x-y gyros; the
+// high-side (h) and lateral (l) parts of the horizontal rate give A = atan2(-l cosI, h - Omega
+// sinI sin(lat)), whose derivatives are B1 (an error on the high-side rate) and B2 (on the lateral
+// rate); G1..G4 are the gyros' errors proportional to the gravity along the high side (g sinI) and
+// the tool axis (g cosI): mass unbalance and its quadrature; RN is noise on both axes. A triad
+// (GXYZ-) solves with its z gyro too and loses the 1/cosI.
+struct Gyrocompass {
+  double (*weight)(double inc, double azi, double lat);
+  bool per_rate;  // divided by the horizontal earth rate
+  bool noise;     // a random noise: an initialising gyrocompass's is the noise reduction factor's share
+};
+
+double sq(double x) { return x * x; }
+
+const std::map<std::string, Gyrocompass>& gyrocompasses() {
+  using std::cos, std::sin, std::sqrt, std::tan;
+  static const std::map<std::string, Gyrocompass> table = {
+      {"GXY-B1", {[](double i, double a, double) { return sin(a) / cos(i); }, true, false}},
+      {"GXY-B2", {[](double, double a, double) { return cos(a); }, true, false}},
+      {"GXY-RN", {[](double i, double a, double) { return sqrt(1 - sq(cos(a) * sin(i))) / cos(i); }, true, true}},
+      {"GXY-G1", {[](double i, double a, double) { return cos(a) * sin(i); }, true, false}},
+      {"GXY-G2", {[](double i, double a, double) { return cos(a) * cos(i); }, true, false}},
+      {"GXY-G3", {[](double, double a, double) { return sin(a); }, true, false}},
+      {"GXY-G4", {[](double i, double a, double) { return sin(a) * tan(i); }, true, false}},
+      {"GXY-SF", {[](double i, double a, double lat) { return tan(lat) * sin(a) * tan(i); }, false, false}},
+      {"GXY-MIS", {[](double i, double, double lat) { return 1 / (cos(lat) * cos(i)); }, false, false}},
+      {"GXYZ-XYB1", {[](double i, double a, double) { return sin(a) * cos(i); }, true, false}},
+      {"GXYZ-XYB2", {[](double, double a, double) { return cos(a); }, true, false}},
+      {"GXYZ-XYRN", {[](double i, double a, double) { return sqrt(1 - sq(sin(a) * sin(i))); }, true, true}},
+      {"GXYZ-XYG1", {[](double i, double a, double) { return cos(a) * sin(i); }, true, false}},
+      {"GXYZ-XYG2", {[](double i, double a, double) { return cos(a) * cos(i); }, true, false}},
+      {"GXYZ-XYG3", {[](double i, double a, double) { return sin(a) * sq(cos(i)); }, true, false}},
+      {"GXYZ-XYG4", {[](double i, double a, double) { return sin(a) * sin(i) * cos(i); }, true, false}},
+      {"GXYZ-ZB", {[](double i, double a, double) { return sin(a) * sin(i); }, true, false}},
+      {"GXYZ-ZRN", {[](double i, double a, double) { return sin(a) * sin(i); }, true, true}},
+      {"GXYZ-ZG1", {[](double i, double a, double) { return sin(a) * sq(sin(i)); }, true, false}},
+      {"GXYZ-ZG2", {[](double i, double a, double) { return sin(a) * sin(i) * cos(i); }, true, false}},
+      {"GXYZ-SF", {[](double i, double a, double lat) { return tan(lat) * sin(a) * sin(i) * cos(i); }, false, false}},
+      {"GXYZ-MIS", {[](double, double, double lat) { return 1 / cos(lat); }, false, false}},
+  };
+  return table;
 }
 
 // How much of the azimuth rate the gyros that run continuously miss in a course of mean
@@ -52,7 +83,7 @@ double hours(const GyroStation& a, const GyroStation& b, std::size_t k, const Gy
 }  // namespace
 
 GyroKind gyro_kind(const std::string& wf) {
-  if (wf == "GXY-B1" || wf == "GXY-B2" || wf == "GXY-G1" || wf == "GXY-G4" || wf == "GXY-RN") return GyroKind::Stationary;
+  if (gyrocompasses().count(wf)) return GyroKind::Stationary;
   if (wf == "GXY-GD" || wf == "GXYZ-GD" || wf == "GZ-GD") return GyroKind::Drift;
   if (wf == "GXY-GRW" || wf == "GXYZ-GRW" || wf == "GZ-GRW") return GyroKind::RandomWalk;
   if (wf == "EXT-REF" || wf == "EXT-TIE") return GyroKind::Reference;
@@ -83,19 +114,25 @@ GyroEffect gyro_term(const std::vector<GyroStation>& s, const Term& term, double
   if (kind == GyroKind::Stationary) {
     if (!std::isfinite(field.latitude_deg))
       throw std::invalid_argument("gyro model: term " + term.code + " is a gyrocompass's and needs the well's latitude");
-    const double horizontal_rate = kEarthRateRadPerHour * std::cos(field.latitude_deg * kRad);
-    const auto weight = [&](std::size_t k) {
-      const double w = gyrocompass_weight(term.weight_function, s[k].inc, s[k].azi, horizontal_rate, r.noise_reduction_factor);
-      return std::isfinite(w) ? w * mag : 0.0;  // horizontal: out of an x-y gyrocompass's range
+    const double lat = field.latitude_deg * kRad;
+    const Gyrocompass& g = gyrocompasses().at(term.weight_function);
+    const double per = g.per_rate ? 1 / (kEarthRateRadPerHour * std::cos(lat)) : 1.0;
+    const auto weight = [&](double inc, double azi) {
+      const double w = g.weight(inc, azi, lat) * per * mag;
+      return std::isfinite(w) ? w : 0.0;  // horizontal: out of an x-y gyrocompass's range
     };
     for (std::size_t k = 0; k < c0; ++k)
-      if (stationary(k)) e.dia[k](2) = weight(k);
+      if (stationary(k)) e.dia[k](2) = weight(s[k].inc, s[k].azi);
     if (c0 < n && gyrocompass_init) {
-      // The run keeps the azimuth error of its initialisation: one draw, held to the end.
-      const double held = weight(i0);
+      // The run keeps the azimuth error of the gyrocompass that initialised it: evaluated at the
+      // initialisation's inclination (the code's, or the initialising station's) and the run's
+      // first azimuth, held to the end. A noise term is that gyrocompass's own measurement, longer
+      // than a station's (the noise reduction factor): one draw of its own for the whole run.
+      const double inc = std::isfinite(r.initialisation_inc_deg) ? r.initialisation_inc_deg * kRad : s[i0].inc;
+      const double held = weight(inc, s[c0].azi) * (g.noise ? r.noise_reduction_factor : 1.0);
       for (std::size_t k = c0; k < n; ++k) {
         e.dia[k](2) = held;
-        if (random) e.group[k] = static_cast<int>(i0);
+        if (random) e.group[k] = static_cast<int>(n);
       }
     }
     return e;

@@ -20,7 +20,7 @@ struct GyroStation {
 
 enum class GyroKind {
   None,        // not a gyro term
-  Stationary,  // GXY-B1, GXY-B2, GXY-G1, GXY-G4, GXY-RN: a gyrocompass at the station
+  Stationary,  // GXY-*, GXYZ-* (B, G, RN, SF, MIS): a gyrocompass at the station
   Drift,       // GXY-GD, GXYZ-GD, GZ-GD: a gyro bias integrated over the time run since the initialisation
   RandomWalk,  // GXY-GRW, GXYZ-GRW, GZ-GRW: the gyro's random walk over that time
   Reference    // EXT-REF, EXT-TIE: the azimuth a continuous run was initialised from
@@ -29,8 +29,8 @@ GyroKind gyro_kind(const std::string& weight_function);
 
 // A term's change of (MD, I, A) at each station (per the magnitude given, in SI: rad/h, rad/sqrt(h),
 // rad) and which stations share one draw of it: stations of the same group (contiguous) share
-// one, groups are independent. A random term is one group per station, except that a
-// gyrocompass initialising a continuous run carries its one draw to every station of the run.
+// one, groups are independent. A random term is one group per station, except that the
+// gyrocompass initialising a continuous run is one draw of its own, held by every station of the run.
 struct GyroEffect {
   std::vector<Eigen::Vector3d> dia;
   std::vector<int> group;

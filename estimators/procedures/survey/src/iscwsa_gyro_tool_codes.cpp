@@ -67,6 +67,7 @@ ToolCode gyro_ns_ct() {
   t.gyro.continuous_start_inc_deg = 15;
   t.gyro.continuous_end_inc_deg = 150;
   t.gyro.initialisation = GyroInitialisation::Gyrocompass;
+  t.gyro.initialisation_inc_deg = 15;
   t.gyro.running_speed_m_per_h = 2743.2;
   t.gyro.noise_reduction_factor = 0.4082;
   return t;

@@ -11,7 +11,8 @@ namespace plumb::survey::iscwsa {
 
 // '#' comments (a line "# tortuosity_rad_per_m V" and "# revision N" are read, and the gyro
 // model's "# gyro_static_inc_deg FROM TO", "# gyro_continuous_inc_deg FROM TO", "#
-// gyro_initialisation gyrocompass|reference", "# gyro_running_speed_m_per_h V", "#
+// gyro_initialisation gyrocompass|reference", "# gyro_initialisation_inc_deg V", "#
+// gyro_running_speed_m_per_h V", "#
 // gyro_noise_reduction_factor V"), the header
 // `code,weight_function,magnitude,unit,propagation` and one row per term; propagation R, S, G or
 // W. Throws std::runtime_error naming the source and line.

@@ -45,9 +45,14 @@ struct GyroRunning {
   bool continuous = false;
   double continuous_start_inc_deg = 0, continuous_end_inc_deg = 180;
   GyroInitialisation initialisation = GyroInitialisation::Gyrocompass;
+  // The inclination at which an initialising gyrocompass is evaluated (the codes' "Initialisation
+  // Inc"); NaN: the initialising station's own.
+  double initialisation_inc_deg = std::numeric_limits<double>::quiet_NaN();
   // The time of a course: its length over the running speed, or (0) the stations' own times.
   double running_speed_m_per_h = 0;
-  double noise_reduction_factor = 1;  // GXY-RN's (the OWSG codes: 1, or 0.4082 for GYRO-NS-CT)
+  // The share of a station's gyro noise left in an initialising gyrocompass, a longer measurement
+  // (SPE 90408's examples: 0.5; OWSG GYRO-NS-CT 0.4082).
+  double noise_reduction_factor = 1;
 };
 
 struct ToolCode {
