@@ -278,6 +278,8 @@ TEST(IscwsaGyro, WhatTheModelCannotDoIsRefused) {
   // The stations' times going backwards, without a running speed.
   const ToolCode tactical = builtin_tool_code("GYRO:tactical");
   EXPECT_THROW(propagate(stations(g, {0, 100, 50}), tactical, Field{}), std::invalid_argument);
+  // No times at all (a listed survey's 0 everywhere): refused, not a run without drift.
+  EXPECT_THROW(propagate(stations(g, {0, 0, 0}), tactical, Field{}), std::invalid_argument);
   EXPECT_NO_THROW(propagate(stations(g, {0, 100, 200}), tactical, Field{}));
   // x-y gyros run continuously through a vertical course.
   std::vector<StationGeometry> vertical{{0, 0, 0}, {30, 0, 0}};

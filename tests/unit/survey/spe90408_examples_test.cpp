@@ -61,8 +61,6 @@ TEST(Spe90408, ExampleModelsOnTestWell1MatchAppendixE) {
   int checked = 0;
   for (const auto& row : rows(kData + "/well1.expected.csv")) {
     const int model = std::stoi(row[0]);
-    // Model #4 (x-y accelerometers canted 17 deg, two continuous zones) is not in plumb's model.
-    if (model == 4) continue;
     if (!results.count(model)) {
       const std::string name = kData + "/model_" + std::to_string(model) + ".tool.csv";
       std::ifstream in(name);
@@ -85,7 +83,7 @@ TEST(Spe90408, ExampleModelsOnTestWell1MatchAppendixE) {
     }
     std::printf("\n");
   }
-  EXPECT_EQ(checked, 21 * 6);  // 26 rows of Table E1 less Model #4's 5
+  EXPECT_EQ(checked, 26 * 6);  // every row of Table E1
 }
 
 }  // namespace

@@ -116,7 +116,9 @@ void vertical_form(const std::vector<Rad>& s, std::size_t k, const detail::Weigh
   }
 }
 
-TermEffect sensor_term(const std::vector<Rad>& s, const Derivatives& d, const Term& t, const Field& field, int revision) {
+TermEffect sensor_term(const std::vector<Rad>& s, const Derivatives& d, const Term& t, const Field& field,
+                       const ToolCode& tool) {
+  const int revision = tool.revision;
   const detail::WeightFunction wf = detail::weight_function(t.weight_function);
   const std::size_t n = s.size();
   const double mag = si_magnitude(t);
@@ -127,7 +129,7 @@ TermEffect sensor_term(const std::vector<Rad>& s, const Derivatives& d, const Te
     const bool vertical = s[k].inc < limit && wf.vertical != Vertical::Regular;
     if (!vertical) {
       WeightContext c{s[k].md, s[k].tvd, s[k].inc, s[k].azi, s[k].azm, field.gravity_mps2, field.total_b_nT,
-                      field.dip_deg * kRad, k ? s[k].md - s[k - 1].md : 0.0};
+                      field.dip_deg * kRad, k ? s[k].md - s[k - 1].md : 0.0, tool.xy_accelerometer_cant_deg * kRad};
       Vector3d w = wf.weight(c) * mag;
       if (wf.course_coefficient) w *= course_coefficient(s, k);
       for (int i = 0; i < 3; ++i)
@@ -251,7 +253,7 @@ Result propagate(const std::vector<Station>& stations, const ToolCode& tool, con
                                   t.weight_function + "'");
     const TermEffect e = xcl    ? course_length_term(s, t, tool, field)
                          : gyro ? gyro_effect(s, d, t, tool, field)
-                                : sensor_term(s, d, t, field, tool.revision);
+                                : sensor_term(s, d, t, field, tool);
     r.codes.push_back(t.code);
     r.per_term.push_back(covariances(e, t.propagation));
     const bool random = t.propagation == Propagation::Random;

@@ -72,8 +72,9 @@ bool within(double inc, double from_deg, double to_deg) { return inc >= from_deg
 // Hours between two stations: the course over the running speed, or the stations' own times.
 double hours(const GyroStation& a, const GyroStation& b, std::size_t k, const GyroRunning& r) {
   if (r.running_speed_m_per_h > 0) return (b.md - a.md) / r.running_speed_m_per_h;
+  // Two stations are never surveyed at once: equal times are times not given (a listed survey's 0).
   const double dt = b.t_s - a.t_s;
-  if (!(dt >= 0))
+  if (!(dt > 0))
     throw std::invalid_argument("gyro model: the continuous terms time the drift by the stations' times, and station " +
                                 std::to_string(k) + "'s does not follow station " + std::to_string(k - 1) +
                                 "'s; give each station its time or the tool code a running speed");
@@ -144,11 +145,20 @@ GyroEffect gyro_term(const std::vector<GyroStation>& s, const Term& term, double
   // Drift and random walk: from the initialisation on, a bias b gives an azimuth error b t / sinI
   // (x-y gyros) after t hours, a random walk q gives q sqrt(t) / sinI; course by course, at the
   // course's mean inclination.
+  // The set's own range where it has one, else the run's (whose courses begin after the
+  // initialising station).
+  double from = r.continuous_start_inc_deg, to = r.continuous_end_inc_deg;
+  if (starts_with(term.weight_function, "GZ-") && std::isfinite(r.z_drift_from_inc_deg))
+    from = r.z_drift_from_inc_deg, to = r.z_drift_to_inc_deg;
+  if (starts_with(term.weight_function, "GXY-") && std::isfinite(r.xy_drift_from_inc_deg))
+    from = r.xy_drift_from_inc_deg, to = r.xy_drift_to_inc_deg;
   double accumulated = 0;
-  for (std::size_t k = i0 + 1; k < n; ++k) {
+  for (std::size_t k = 1; k < n; ++k) {
+    const bool grows = r.continuous && within(s[k].inc, from, to);
     const double f = continuous_factor(term.weight_function, (s[k].inc + s[k - 1].inc) / 2);
-    const double t = hours(s[k - 1], s[k], k, r);
-    accumulated = kind == GyroKind::Drift ? accumulated + t * f : std::sqrt(accumulated * accumulated + t * f * f);
+    const double t = grows ? hours(s[k - 1], s[k], k, r) : 0.0;
+    if (t > 0)
+      accumulated = kind == GyroKind::Drift ? accumulated + t * f : std::sqrt(accumulated * accumulated + t * f * f);
     if (!std::isfinite(accumulated))
       throw std::invalid_argument("gyro model: term " + term.code + " runs x-y gyros (or a z gyro) continuously through a "
                                   "course they cannot see turn (vertical, or horizontal); start the continuous range "

@@ -64,10 +64,13 @@ V axyz_mis(const WeightContext&) { return {0, 1, 0}; }
 V axyz_sf(const WeightContext& c) { return {0, 1.3 * std::sin(c.inc) * std::cos(c.inc), 0}; }
 V axyz_xyb(const WeightContext& c) { return {0, std::cos(c.inc) / c.gravity, 0}; }
 V axyz_zb(const WeightContext& c) { return {0, std::sin(c.inc) / c.gravity, 0}; }
-V axy_b(const WeightContext& c) { return {0, 1 / (c.gravity * std::cos(c.inc)), 0}; }
-V axy_sf(const WeightContext& c) { return {0, std::tan(c.inc), 0}; }
+// Canted x-y accelerometers see the inclination less their cant, the tool turned over beyond
+// horizontal (SPE 90408 Table 2, its note 5: k = 1 to 90 deg, -1 beyond).
+double axy_inc(const WeightContext& c) { return c.inc - (c.inc <= std::acos(0.0) ? 1 : -1) * c.cant; }
+V axy_b(const WeightContext& c) { return {0, 1 / (c.gravity * std::cos(axy_inc(c))), 0}; }
+V axy_sf(const WeightContext& c) { return {0, std::tan(axy_inc(c)), 0}; }
 V axy_mis(const WeightContext&) { return {0, 1, 0}; }
-V axy_gb(const WeightContext& c) { return {0, std::tan(c.inc) / c.gravity, 0}; }
+V axy_gb(const WeightContext& c) { return {0, std::tan(axy_inc(c)) / c.gravity, 0}; }
 // Depth.
 V dref(const WeightContext&) { return {1, 0, 0}; }
 V dsf(const WeightContext& c) { return {c.md, 0, 0}; }

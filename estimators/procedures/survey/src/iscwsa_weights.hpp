@@ -15,6 +15,7 @@ struct WeightContext {
   double inc = 0, azi = 0, azm = 0;  // radians: inclination, azimuth of the position frame, magnetic azimuth
   double gravity = 9.80665, total_b_nT = 50000, dip = 0;  // dip in radians
   double course_m = 0;               // length of the course ending here (0 at the first station)
+  double cant = 0;                   // x-y accelerometers canted to the tool axis (rad; SPE 90408's Model #4)
 };
 
 // How a weighting function behaves near vertical.

@@ -53,6 +53,14 @@ struct GyroRunning {
   // The share of a station's gyro noise left in an initialising gyrocompass, a longer measurement
   // (SPE 90408's examples: 0.5; OWSG GYRO-NS-CT 0.4082).
   double noise_reduction_factor = 1;
+  // Where each gyro set's drift and random walk grow: over every course ending within its
+  // inclination range, from the first station on (held beyond); NaN: the run's range. A z gyro
+  // cannot see a turn toward horizontal, x-y gyros none toward vertical: SPE 90408's Model #4 runs
+  // its z gyro from the surface to 17 deg, then its x-y gyros to 150 deg.
+  double z_drift_from_inc_deg = std::numeric_limits<double>::quiet_NaN();
+  double z_drift_to_inc_deg = std::numeric_limits<double>::quiet_NaN();
+  double xy_drift_from_inc_deg = std::numeric_limits<double>::quiet_NaN();
+  double xy_drift_to_inc_deg = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct ToolCode {
@@ -60,6 +68,7 @@ struct ToolCode {
   int revision = 5;             // 4: revision 4's derivatives; 5 and later: revision 5's
   double tortuosity_rad_per_m = 0.000572615;  // XCL terms (1 deg / 100 ft)
   std::vector<Term> terms;
+  double xy_accelerometer_cant_deg = 0;  // the AXY- terms of x-y accelerometers canted to the tool axis
   GyroRunning gyro{};           // read by the gyro terms only
 };
 
