@@ -142,11 +142,11 @@ GyroEffect gyro_term(const std::vector<GyroStation>& s, const Term& term, double
     for (std::size_t k = c0; k < n; ++k) e.dia[k](2) = mag;
     return e;
   }
-  // Drift and random walk: from the initialisation on, a bias b gives an azimuth error b t / sinI
-  // (x-y gyros) after t hours, a random walk q gives q sqrt(t) / sinI; course by course, at the
-  // course's mean inclination.
-  // The set's own range where it has one, else the run's (whose courses begin after the
-  // initialising station).
+  // Drift and random walk: a bias b gives an azimuth error b t / sinI (x-y gyros) after t hours, a
+  // random walk q gives q sqrt(t) / sinI; course by course, at the course's mean inclination, over
+  // the courses ending in the gyro set's own range where it has one (from the first station), else
+  // in the run's (whose first course ends at its first station, after the initialisation). The
+  // run's stations carry what has grown.
   double from = r.continuous_start_inc_deg, to = r.continuous_end_inc_deg;
   if (starts_with(term.weight_function, "GZ-") && std::isfinite(r.z_drift_from_inc_deg))
     from = r.z_drift_from_inc_deg, to = r.z_drift_to_inc_deg;
