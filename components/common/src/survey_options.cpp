@@ -23,6 +23,9 @@ void add_survey_options(CLI::App& app, SurveyCliOptions& o) {
   app.add_option("--gravity", o.gravity, "reference local gravity, m/s^2 (QC of |G|)");
   app.add_option("--total-field", o.total_field, "reference total field, uT (QC of |B|)");
   app.add_option("--dip", o.dip, "reference dip, deg, down positive (QC of dip)");
+  app.add_option("--latitude", o.latitude_deg, "latitude of the well, deg (the gyro model's gyrocompass terms: "
+                                               "GYRO-NS, GYRO-NS-CT, GYRO-MWD)")
+      ->check(CLI::Range(-90.0, 90.0));
   app.add_option("--reference-file", o.reference_file, "reference field file: lines `gravity_mps2 V`, `total_b_uT V`, "
                                                        "`dip_deg V`, `declination_deg V` (options given win)");
   app.add_option("--tol-gravity", o.tol_gravity, "QC tolerance on |G|, m/s^2 (default 0.003 g = 0.0294)");
@@ -49,7 +52,9 @@ void add_survey_options(CLI::App& app, SurveyCliOptions& o) {
   app.add_option("--error-model", o.error_model,
                  "position uncertainty: the ISCWSA MWD model with a built-in tool code (MWD = MWD:rev5.1, the OWSG "
                  "revision 5.1 values; MWD:rev5 the ISCWSA revision 5 workbooks' (DEC-OH 0.20 deg); MWD:rev4; "
-                 "MWD+IFR1), a tool code file (code,weight_function,magnitude,unit,propagation), plumb (plumb's own "
+                 "MWD+IFR1), the ISCWSA gyro model (GYRO-NS, GYRO-NS-CT, GYRO-MWD: OWSG revision 5.1; GYRO:tactical, "
+                 "GYRO:mems: plumb's strapdown grades, continuous from a known azimuth), a tool code file "
+                 "(code,weight_function,magnitude,unit,propagation), plumb (plumb's own "
                  "terms, --axial-bias-sd and the like), or auto (MWD for a magnetic survey, plumb for the strapdown "
                  "navigator's)")
       ->capture_default_str();
@@ -101,6 +106,7 @@ survey::SurveyOptions make_survey_options(const SurveyCliOptions& o, const std::
   if (o.gravity) s.field.gravity_mps2 = *o.gravity;
   if (o.total_field) s.field.total_b_uT = *o.total_field;
   if (o.dip) s.field.dip_deg = *o.dip;
+  if (o.latitude_deg) s.latitude_deg = *o.latitude_deg;
   if (o.declination_deg) s.field.declination_deg = *o.declination_deg;
   if (s.field.declination_deg) {
     s.north.declination_deg = *s.field.declination_deg;

@@ -1,12 +1,16 @@
 // The ISCWSA MWD error model against ISCWSA's own example workbooks (tests/data/iscwsa, extracted
 // from error-model-example-mwdrev4-iscwsa-1, -mwdrev5-iscwsa-1 and -mwdrev5-iscwsa-2): the wells'
 // stations, field and term values in; every term's covariance (NN, EE, VV, NE, NV, EV) at each
-// diagnostic depth must match the workbook's within 0.1 %.
+// diagnostic depth must match the workbook's within 0.1 %, from the whole well and from a survey
+// that ends at that depth (as a live survey does); and a station's values must not depend on the
+// stations after it.
 #include <cmath>
+#include <cstddef>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -75,12 +79,24 @@ Example load(const std::string& name) {
   return ex;
 }
 
+// One diagnostic value: 0.1 % of the workbook's; a value the workbook gives as 0 must be 0 to
+// round-off.
+void expect_cell(double ours, const std::string& theirs_text, const std::string& what) {
+  const double theirs = std::stod(theirs_text);
+  EXPECT_NEAR(ours, theirs, 1e-3 * std::abs(theirs) + 1e-10) << what;
+}
+
+// How the well is run through the model: whole, or ending at each diagnostic depth, as a live
+// survey is when that station is its newest.
+enum class Run { WholeWell, EndingAtEachDepth };
+
 // Every term at every diagnostic depth; returns the number of values compared.
-int compare(const std::string& name) {
+int compare(const std::string& name, Run run) {
   const Example ex = load(name);
-  const Result r = propagate(ex.stations, ex.tool, ex.field);
+  const Result whole = propagate(ex.stations, ex.tool, ex.field);
+  std::map<std::size_t, Result> ending;  // by the index of the last station
   std::map<std::string, std::size_t> term;
-  for (std::size_t i = 0; i < r.codes.size(); ++i) term[r.codes[i]] = i;
+  for (std::size_t i = 0; i < whole.codes.size(); ++i) term[whole.codes[i]] = i;
   int compared = 0;
   for (const auto& row : rows(kData + "/" + name + ".expected.csv")) {
     const double md = std::stod(row[0]) * ex.depth_unit_m;
@@ -91,6 +107,11 @@ int compare(const std::string& name) {
       ADD_FAILURE() << name << ": no station at MD " << row[0];
       continue;
     }
+    if (run == Run::EndingAtEachDepth && !ending.count(k)) {
+      const std::vector<Station> above(ex.stations.begin(), ex.stations.begin() + static_cast<std::ptrdiff_t>(k + 1));
+      ending.emplace(k, propagate(above, ex.tool, ex.field));
+    }
+    const Result& r = run == Run::WholeWell ? whole : ending.at(k);
     Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
     if (code == "TOTAL") {
       c = r.total[k];
@@ -102,20 +123,54 @@ int compare(const std::string& name) {
     }
     const double ours[6] = {c(0, 0), c(1, 1), c(2, 2), c(0, 1), c(0, 2), c(1, 2)};
     const char* names[6] = {"NN", "EE", "VV", "NE", "NV", "EV"};
-    for (int i = 0; i < 6; ++i) {
-      const double theirs = std::stod(row[2 + static_cast<std::size_t>(i)]);
-      // 0.1 % of the value; a value the workbook gives as 0 must be 0 to round-off.
-      EXPECT_NEAR(ours[i], theirs, 1e-3 * std::abs(theirs) + 1e-10)
-          << name << " MD " << row[0] << " " << code << " " << names[i];
+    for (std::size_t i = 0; i < 6; ++i) {
+      expect_cell(ours[i], row[2 + i],
+                  name + (run == Run::WholeWell ? "" : " ending") + " MD " + row[0] + " " + code + " " + names[i]);
       ++compared;
     }
   }
   return compared;
 }
 
-TEST(IscwsaWorkbook, MwdRevision4Example1) { EXPECT_EQ(compare("mwdrev4-iscwsa-1"), 4 * 28 * 6); }
-TEST(IscwsaWorkbook, MwdRevision5Example1) { EXPECT_EQ(compare("mwdrev5-iscwsa-1"), 4 * 36 * 6); }
-TEST(IscwsaWorkbook, MwdRevision5Example2) { EXPECT_EQ(compare("mwdrev5-iscwsa-2"), 7 * 36 * 6); }
+TEST(IscwsaWorkbook, MwdRevision4Example1) { EXPECT_EQ(compare("mwdrev4-iscwsa-1", Run::WholeWell), 4 * 28 * 6); }
+TEST(IscwsaWorkbook, MwdRevision5Example1) { EXPECT_EQ(compare("mwdrev5-iscwsa-1", Run::WholeWell), 4 * 36 * 6); }
+TEST(IscwsaWorkbook, MwdRevision5Example2) { EXPECT_EQ(compare("mwdrev5-iscwsa-2", Run::WholeWell), 7 * 36 * 6); }
+
+// The same cells from a survey that ends at the diagnostic depth: the first depth of each well is
+// the end of its vertical section, where the vertical form once left out the newest station's own
+// course (revision 4 well 1 at 1200 m: NN 4.404, EE 4.398 against 4.5111).
+TEST(IscwsaWorkbook, MwdRevision4Example1EndingAtEachDepth) {
+  EXPECT_EQ(compare("mwdrev4-iscwsa-1", Run::EndingAtEachDepth), 4 * 28 * 6);
+}
+TEST(IscwsaWorkbook, MwdRevision5Example1EndingAtEachDepth) {
+  EXPECT_EQ(compare("mwdrev5-iscwsa-1", Run::EndingAtEachDepth), 4 * 36 * 6);
+}
+TEST(IscwsaWorkbook, MwdRevision5Example2EndingAtEachDepth) {
+  EXPECT_EQ(compare("mwdrev5-iscwsa-2", Run::EndingAtEachDepth), 7 * 36 * 6);
+}
+
+// A station's covariance depends on the stations above it only (survey.hpp: rows never change once
+// added): every term at every station of each well, the well ending there against the whole well.
+TEST(IscwsaWorkbook, AStationDoesNotDependOnTheStationsAfterIt) {
+  for (const std::string name : {"mwdrev4-iscwsa-1", "mwdrev5-iscwsa-1", "mwdrev5-iscwsa-2"}) {
+    const Example ex = load(name);
+    const Result whole = propagate(ex.stations, ex.tool, ex.field);
+    int differ = 0;
+    std::string first;
+    for (std::size_t k = 1; k < ex.stations.size(); ++k) {
+      const std::vector<Station> above(ex.stations.begin(), ex.stations.begin() + static_cast<std::ptrdiff_t>(k + 1));
+      const Result ending = propagate(above, ex.tool, ex.field);
+      for (std::size_t t = 0; t < whole.codes.size(); ++t) {
+        const Eigen::Matrix3d& a = ending.per_term[t][k];
+        const Eigen::Matrix3d& b = whole.per_term[t][k];
+        if ((a - b).cwiseAbs().maxCoeff() > 1e-9 * (1 + b.cwiseAbs().maxCoeff())) {
+          if (differ++ == 0) first = whole.codes[t] + " at MD " + std::to_string(ex.stations[k].md_m);
+        }
+      }
+    }
+    EXPECT_EQ(differ, 0) << name << ": first " << first;
+  }
+}
 
 }  // namespace
 }  // namespace plumb::survey::iscwsa

@@ -11,6 +11,53 @@
 
 namespace plumb::survey::iscwsa {
 
+namespace {
+
+// The gyro model's running (plumb/survey/iscwsa.hpp GyroRunning): "# gyro_static_inc_deg FROM TO",
+// "# gyro_continuous_inc_deg FROM TO" (the tool runs continuously from there), "#
+// gyro_initialisation gyrocompass|reference", "# gyro_initialisation_inc_deg V", "#
+// gyro_running_speed_m_per_h V" (0: the stations' times), "# gyro_noise_reduction_factor V", "#
+// gyro_z_drift_inc_deg FROM TO", "# gyro_xy_drift_inc_deg FROM TO".
+void read_gyro_key(GyroRunning& g, const std::string& key, const std::string& value, const std::string& second,
+                   const std::string& where) {
+  const auto number = [&](const std::string& text, bool positive) {
+    const auto v = parse_number(text);
+    if (!v || !std::isfinite(*v) || *v < 0 || (positive && *v == 0))
+      throw std::runtime_error(where + key + ": bad number '" + text + "'");
+    return *v;
+  };
+  if (key == "gyro_static_inc_deg" || key == "gyro_continuous_inc_deg" || key == "gyro_z_drift_inc_deg" ||
+      key == "gyro_xy_drift_inc_deg") {
+    const double from = number(value, false), to = number(second, false);
+    if (!(to >= from && to <= 180)) throw std::runtime_error(where + key + ": FROM TO in degrees, 0 <= FROM <= TO <= 180");
+    if (key == "gyro_static_inc_deg") {
+      g.static_start_inc_deg = from, g.static_end_inc_deg = to;
+    } else if (key == "gyro_continuous_inc_deg") {
+      g.continuous = true, g.continuous_start_inc_deg = from, g.continuous_end_inc_deg = to;
+    } else if (key == "gyro_z_drift_inc_deg") {
+      g.z_drift_from_inc_deg = from, g.z_drift_to_inc_deg = to;
+    } else {
+      g.xy_drift_from_inc_deg = from, g.xy_drift_to_inc_deg = to;
+    }
+  } else if (key == "gyro_initialisation") {
+    if (value == "gyrocompass") g.initialisation = GyroInitialisation::Gyrocompass;
+    else if (value == "reference") g.initialisation = GyroInitialisation::Reference;
+    else throw std::runtime_error(where + key + ": '" + value + "' is not gyrocompass or reference");
+  } else if (key == "gyro_initialisation_inc_deg") {
+    g.initialisation_inc_deg = number(value, false);
+  } else if (key == "gyro_running_speed_m_per_h") {
+    g.running_speed_m_per_h = number(value, false);
+  } else if (key == "gyro_noise_reduction_factor") {
+    g.noise_reduction_factor = number(value, true);
+  } else {
+    throw std::runtime_error(where + "unknown gyro key '" + key + "' (gyro_static_inc_deg, gyro_continuous_inc_deg, "
+                             "gyro_initialisation, gyro_initialisation_inc_deg, gyro_running_speed_m_per_h, "
+                             "gyro_noise_reduction_factor, gyro_z_drift_inc_deg, gyro_xy_drift_inc_deg)");
+  }
+}
+
+}  // namespace
+
 ToolCode read_tool_code(std::istream& in, const std::string& source) {
   ToolCode t{source, 5, 0.000572615, {}};
   std::map<std::string, std::size_t> columns;
@@ -26,11 +73,19 @@ ToolCode read_tool_code(std::istream& in, const std::string& source) {
       std::istringstream words(line.substr(1));
       std::string key, value;
       words >> key >> value;
-      if (key == "tortuosity_rad_per_m" || key == "revision") {
+      if (key == "xy_accelerometer_cant_deg") {
+        const auto v = parse_number(value);
+        if (!v || !std::isfinite(*v)) throw std::runtime_error(where + key + ": bad number '" + value + "'");
+        t.xy_accelerometer_cant_deg = *v;
+      } else if (key == "tortuosity_rad_per_m" || key == "revision") {
         const auto v = parse_number(value);
         if (!v || !(*v > 0)) throw std::runtime_error(where + key + ": bad number '" + value + "'");
         if (key == "revision") t.revision = static_cast<int>(*v);
         else t.tortuosity_rad_per_m = *v;
+      } else if (key.rfind("gyro_", 0) == 0) {
+        std::string second;
+        words >> second;
+        read_gyro_key(t.gyro, key, value, second, where);
       }
       continue;
     }

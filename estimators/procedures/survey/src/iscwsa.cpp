@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "iscwsa_gyro.hpp"
 #include "iscwsa_weights.hpp"
 
 namespace plumb::survey::iscwsa {
@@ -15,9 +16,11 @@ using detail::Vertical;
 using detail::WeightContext;
 constexpr double kRad = 3.14159265358979323846 / 180.0;
 
-// A magnitude in the units its weighting function expects: angles in radians.
+// A magnitude in the units its weighting function expects: angles in radians (a gyro's rates per
+// hour; "deg/sqr(hr)" is the OWSG codes' spelling of a random walk's deg/sqrt(hr)).
 double si_magnitude(const Term& t) {
-  if (t.unit == "deg" || t.unit == "deg.nT") return t.magnitude * kRad;
+  if (t.unit == "deg" || t.unit == "deg.nT" || t.unit == "deg/hr" || t.unit == "deg/sqrt(hr)" || t.unit == "deg/sqr(hr)")
+    return t.magnitude * kRad;
   return t.magnitude;
 }
 
@@ -36,7 +39,7 @@ Vector3d d_direction_d_inc(double inc, double azi) {
 Vector3d d_direction_d_azi(double inc, double azi) { return {-std::sin(inc) * std::sin(azi), std::sin(inc) * std::cos(azi), 0}; }
 
 struct Rad {
-  double md, inc, azi, azm, tvd;
+  double md, inc, azi, azm, tvd, t;
 };
 
 Derivatives derivatives(const std::vector<Rad>& s, int revision) {
@@ -62,6 +65,7 @@ Derivatives derivatives(const std::vector<Rad>& s, int revision) {
 struct TermEffect {
   std::vector<Vector3d> full, star;
   std::vector<Vector3d> dia;  // the (MD, I, A) change itself
+  std::vector<int> group{};   // stations sharing one draw (gyro terms); empty: as the propagation says
 };
 
 // A lone station (the tie-in, the first of a live survey) has no course yet: nothing to scale.
@@ -73,21 +77,28 @@ double course_coefficient(const std::vector<Rad>& s, std::size_t k) {
 }
 
 // Near vertical the azimuth-dependent terms take the model's vertical form: the error moves the
-// station sideways by the course length around it.
+// station sideways by the course length around it. A station's own effect ("star") is the half
+// course ending at it, whether or not a station follows: the newest station of a live survey has
+// no course after it yet, and its covariance must not change when the next one comes (the around
+// of the last station is never used: nothing lies below it).
 void vertical_form(const std::vector<Rad>& s, std::size_t k, const detail::WeightFunction& wf, double mag,
                    const Field& field, int revision, TermEffect& e) {
   const std::size_t n = s.size();
   const bool last = k + 1 == n;
-  const double around = last ? 0.0 : (s[k + 1].md - s[k - 1].md) / 2;
   const double own = (s[k].md - s[k - 1].md) / 2;
+  const double around = last ? own : (s[k + 1].md - s[k - 1].md) / 2;
+  // The first course counted whole against the first station (revision 5; and the XYM3E/XYM4E
+  // course-length weighting, which only revision 5 has).
+  const double first_own = 2 * own;
+  const double first_around = last ? first_own : (s[2].md + s[1].md - 2 * s[0].md) / 2;
   if (wf.vertical == Vertical::AccelerometerXY) {
     const double g = mag / field.gravity_mps2;
     const Vector3d side(-std::sin(s[k].azi), std::cos(s[k].azi), 0);
-    e.full[k] = last ? Vector3d::Zero() : Vector3d(around * g * side);
-    e.star[k] = last ? Vector3d::Zero() : Vector3d(own * g * side);
-    if (revision >= 5 && k == 1 && n > 2) {
-      e.full[k](1) = (s[2].md + s[1].md - 2 * s[0].md) / 2 * g * std::cos(s[1].azi);
-      e.star[k](1) = (s[1].md - s[0].md) * g * std::cos(s[1].azi);
+    e.full[k] = around * g * side;
+    e.star[k] = own * g * side;
+    if (revision >= 5 && k == 1) {
+      e.full[k](1) = first_around * g * std::cos(s[1].azi);
+      e.star[k](1) = first_own * g * std::cos(s[1].azi);
     }
     return;
   }
@@ -95,18 +106,19 @@ void vertical_form(const std::vector<Rad>& s, std::size_t k, const detail::Weigh
   e.full[k].setZero();
   e.star[k].setZero();
   if (wf.course_coefficient) {
+    // The coefficient scales the station's error, so its own course as well as the one after it.
     const double c = course_coefficient(s, k);
-    double full = last ? c * (s[k].md - s[k - 1].md) / 2 : c * around;
-    if (k == 1 && n > 2) full = c * (s[2].md + s[1].md - 2 * s[0].md) / 2;
-    e.full[k](axis) = full * mag;
-    e.star[k](axis) = (k == 1 ? 2 * own : own) * mag;
+    e.full[k](axis) = c * (k == 1 ? first_around : around) * mag;
+    e.star[k](axis) = c * (k == 1 ? first_own : own) * mag;
   } else {
     e.full[k](axis) = around * mag;
-    e.star[k](axis) = last ? 0.0 : own * mag;
+    e.star[k](axis) = own * mag;
   }
 }
 
-TermEffect sensor_term(const std::vector<Rad>& s, const Derivatives& d, const Term& t, const Field& field, int revision) {
+TermEffect sensor_term(const std::vector<Rad>& s, const Derivatives& d, const Term& t, const Field& field,
+                       const ToolCode& tool) {
+  const int revision = tool.revision;
   const detail::WeightFunction wf = detail::weight_function(t.weight_function);
   const std::size_t n = s.size();
   const double mag = si_magnitude(t);
@@ -117,7 +129,7 @@ TermEffect sensor_term(const std::vector<Rad>& s, const Derivatives& d, const Te
     const bool vertical = s[k].inc < limit && wf.vertical != Vertical::Regular;
     if (!vertical) {
       WeightContext c{s[k].md, s[k].tvd, s[k].inc, s[k].azi, s[k].azm, field.gravity_mps2, field.total_b_nT,
-                      field.dip_deg * kRad, k ? s[k].md - s[k - 1].md : 0.0};
+                      field.dip_deg * kRad, k ? s[k].md - s[k - 1].md : 0.0, tool.xy_accelerometer_cant_deg * kRad};
       Vector3d w = wf.weight(c) * mag;
       if (wf.course_coefficient) w *= course_coefficient(s, k);
       for (int i = 0; i < 3; ++i)
@@ -131,6 +143,23 @@ TermEffect sensor_term(const std::vector<Rad>& s, const Derivatives& d, const Te
       e.full[k] = (d.ending[k] + d.leaving[k]) * e.dia[k];
       e.star[k] = d.ending[k] * e.dia[k];
     }
+  }
+  return e;
+}
+
+// A gyro term: its change of (MD, I, A) at each station through the same derivatives as the
+// sensor terms, and the stations that share one draw of it.
+TermEffect gyro_effect(const std::vector<Rad>& s, const Derivatives& d, const Term& t, const ToolCode& tool,
+                       const Field& field) {
+  std::vector<detail::GyroStation> g;
+  for (const Rad& r : s) g.push_back({r.md, r.inc, r.azi, r.t});
+  detail::GyroEffect ge = detail::gyro_term(g, t, si_magnitude(t), tool.gyro, field);
+  const std::size_t n = s.size();
+  TermEffect e{std::vector<Vector3d>(n, Vector3d::Zero()), std::vector<Vector3d>(n, Vector3d::Zero()),
+               std::move(ge.dia), std::move(ge.group)};
+  for (std::size_t k = 1; k < n; ++k) {
+    e.full[k] = (d.ending[k] + d.leaving[k]) * e.dia[k];
+    e.star[k] = d.ending[k] * e.dia[k];
   }
   return e;
 }
@@ -160,20 +189,29 @@ TermEffect course_length_term(const std::vector<Rad>& s, const Term& t, const To
   return e;
 }
 
+// Stations of one group share one draw of the term: their position changes add as vectors;
+// groups are independent, their covariances add. A random term is one group per station, a
+// systematic one a single group; a gyro term may join stations (a continuous run that keeps its
+// initialisation's error). Groups are contiguous runs of stations.
 std::vector<Matrix3d> covariances(const TermEffect& e, Propagation p) {
   const std::size_t n = e.full.size();
   std::vector<Matrix3d> out(n, Matrix3d::Zero());
-  Vector3d sum = Vector3d::Zero();
-  Matrix3d sum_cov = Matrix3d::Zero();
+  const auto group = [&](std::size_t k) {
+    if (!e.group.empty()) return e.group[k];
+    return p == Propagation::Random ? static_cast<int>(k) : 0;
+  };
+  Matrix3d closed = Matrix3d::Zero();  // the groups wholly above this station
+  Vector3d open = Vector3d::Zero();    // the station's own group, from the stations above it
+  int open_group = n ? group(0) : 0;
   for (std::size_t k = 0; k < n; ++k) {
-    if (p == Propagation::Random) {
-      out[k] = sum_cov + e.star[k] * e.star[k].transpose();
-      sum_cov += e.full[k] * e.full[k].transpose();
-    } else {
-      const Vector3d v = sum + e.star[k];
-      out[k] = v * v.transpose();
-      sum += e.full[k];
+    if (group(k) != open_group) {
+      closed += open * open.transpose();
+      open.setZero();
+      open_group = group(k);
     }
+    const Vector3d v = open + e.star[k];
+    out[k] = closed + v * v.transpose();
+    open += e.full[k];
   }
   return out;
 }
@@ -181,7 +219,14 @@ std::vector<Matrix3d> covariances(const TermEffect& e, Propagation p) {
 }  // namespace
 
 bool known_weight_function(const std::string& name) {
-  return detail::weight_function(name).weight != nullptr || detail::is_course_length_term(name, "");
+  return detail::weight_function(name).weight != nullptr || detail::is_course_length_term(name, "") ||
+         detail::gyro_kind(name) != detail::GyroKind::None;
+}
+
+bool needs_latitude(const ToolCode& tool) {
+  for (const Term& t : tool.terms)
+    if (detail::gyro_kind(t.weight_function) == detail::GyroKind::Stationary) return true;
+  return false;
 }
 
 Result propagate(const std::vector<Station>& stations, const ToolCode& tool, const Field& field) {
@@ -189,7 +234,8 @@ Result propagate(const std::vector<Station>& stations, const ToolCode& tool, con
   for (const auto& st : stations) {
     if (!s.empty() && !(st.md_m > s.back().md))
       throw std::invalid_argument("ISCWSA model: measured depths must increase strictly");
-    s.push_back({st.md_m, st.inclination_deg * kRad, st.azimuth_deg * kRad, st.magnetic_azimuth_deg * kRad, st.tvd_m});
+    s.push_back({st.md_m, st.inclination_deg * kRad, st.azimuth_deg * kRad, st.magnetic_azimuth_deg * kRad, st.tvd_m,
+                 st.t_s});
   }
   const std::size_t n = s.size();
   Result r;
@@ -201,10 +247,13 @@ Result propagate(const std::vector<Station>& stations, const ToolCode& tool, con
   const Derivatives d = derivatives(s, tool.revision);
   for (const Term& t : tool.terms) {
     const bool xcl = detail::is_course_length_term(t.weight_function, t.code);
-    if (!xcl && !detail::weight_function(t.weight_function).weight)
+    const bool gyro = detail::gyro_kind(t.weight_function) != detail::GyroKind::None;
+    if (!xcl && !gyro && !detail::weight_function(t.weight_function).weight)
       throw std::invalid_argument("ISCWSA model: term " + t.code + " has an unknown weighting function '" +
                                   t.weight_function + "'");
-    const TermEffect e = xcl ? course_length_term(s, t, tool, field) : sensor_term(s, d, t, field, tool.revision);
+    const TermEffect e = xcl    ? course_length_term(s, t, tool, field)
+                         : gyro ? gyro_effect(s, d, t, tool, field)
+                                : sensor_term(s, d, t, field, tool);
     r.codes.push_back(t.code);
     r.per_term.push_back(covariances(e, t.propagation));
     const bool random = t.propagation == Propagation::Random;

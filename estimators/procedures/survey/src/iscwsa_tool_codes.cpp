@@ -6,6 +6,8 @@
 
 #include "plumb/survey/iscwsa.hpp"
 
+#include "iscwsa_gyro_tool_codes.hpp"
+
 namespace plumb::survey::iscwsa {
 namespace {
 
@@ -83,13 +85,18 @@ ToolCode ifr1() {
 
 }  // namespace
 
-std::vector<std::string> builtin_tool_codes() { return {"MWD", "MWD:rev5.1", "MWD:rev5", "MWD:rev4", "MWD+IFR1"}; }
+std::vector<std::string> builtin_tool_codes() {
+  std::vector<std::string> names{"MWD", "MWD:rev5.1", "MWD:rev5", "MWD:rev4", "MWD+IFR1"};
+  for (const auto& g : detail::gyro_tool_code_names()) names.push_back(g);
+  return names;
+}
 
 ToolCode builtin_tool_code(const std::string& name) {
   if (name == "MWD" || name == "MWD:rev5.1") return rev5(true);
   if (name == "MWD:rev5") return rev5(false);
   if (name == "MWD:rev4") return rev4();
   if (name == "MWD+IFR1") return ifr1();
+  if (auto gyro = detail::builtin_gyro_tool_code(name)) return *gyro;
   std::string names;
   for (const auto& n : builtin_tool_codes()) names += (names.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown tool code '" + name + "' (built in: " + names + "; or a tool code file)");

@@ -55,6 +55,22 @@ V msz(const WeightContext& c) {
   const double si = std::sin(c.inc);
   return {0, 0, -(si * std::cos(c.azm) + std::tan(c.dip) * std::cos(c.inc)) * si * std::sin(c.azm)};
 }
+// A gyro tool's accelerometers (the ISCWSA gyro model, SPE 90408 Tables 1 and 2). A triad:
+// misalignment, scale factor (the model's 1.3 sin I cos I), the x-y and the z biases (the closed
+// form's dI = cosI b / g and -sinI b / g). X-y accelerometers only, the inclination from the
+// radial gravity alone: bias 1 / (g cosI), scale factor tanI, misalignment, and a bias proportional
+// to gravity (tanI / g).
+V axyz_mis(const WeightContext&) { return {0, 1, 0}; }
+V axyz_sf(const WeightContext& c) { return {0, 1.3 * std::sin(c.inc) * std::cos(c.inc), 0}; }
+V axyz_xyb(const WeightContext& c) { return {0, std::cos(c.inc) / c.gravity, 0}; }
+V axyz_zb(const WeightContext& c) { return {0, std::sin(c.inc) / c.gravity, 0}; }
+// Canted x-y accelerometers see the inclination less their cant, the tool turned over beyond
+// horizontal (SPE 90408 Table 2, its note 5: k = 1 to 90 deg, -1 beyond).
+double axy_inc(const WeightContext& c) { return c.inc - (c.inc <= std::acos(0.0) ? 1 : -1) * c.cant; }
+V axy_b(const WeightContext& c) { return {0, 1 / (c.gravity * std::cos(axy_inc(c))), 0}; }
+V axy_sf(const WeightContext& c) { return {0, std::tan(axy_inc(c)), 0}; }
+V axy_mis(const WeightContext&) { return {0, 1, 0}; }
+V axy_gb(const WeightContext& c) { return {0, std::tan(axy_inc(c)) / c.gravity, 0}; }
 // Depth.
 V dref(const WeightContext&) { return {1, 0, 0}; }
 V dsf(const WeightContext& c) { return {c.md, 0, 0}; }
@@ -87,6 +103,8 @@ WeightFunction weight_function(const std::string& name) {
       {"MBXY-TI1", {mbxy_ti1}}, {"MBXY-TI2", {mbxy_ti2}}, {"MBZ", {mbz}},
       {"MSXY-TI1", {msxy_ti1}}, {"MSXY-TI2", {msxy_ti2}}, {"MSXY-TI3", {msxy_ti3}}, {"MSZ", {msz}},
       {"AZ", {az}}, {"DBH", {dbh}}, {"AMIL", {amil}},
+      {"AXYZ-MIS", {axyz_mis}}, {"AXYZ-SF", {axyz_sf}}, {"AXYZ-XYB", {axyz_xyb}}, {"AXYZ-ZB", {axyz_zb}},
+      {"AXY-B", {axy_b}}, {"AXY-SF", {axy_sf}}, {"AXY-MIS", {axy_mis}}, {"AXY-GB", {axy_gb}},
       {"SAG", {sag}}, {"SAGE", {sage}}, {"XYM1", {xym1}}, {"XYM2", {xym2}},
       {"XYM3", {xym3, Vertical::MisalignmentNorth}}, {"XYM4", {xym4, Vertical::MisalignmentEast}},
       // Revision 5's course-length-weighted misalignments (the workbooks call them XYM3L, XYM4L).

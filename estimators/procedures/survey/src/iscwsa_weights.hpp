@@ -1,6 +1,7 @@
 // The weighting functions of the ISCWSA MWD model: the change of (MD, I, A) per unit of a term's
 // magnitude at one station (SPE 67616 Table 1, SPE 63275 for the toolface-independent x-y terms,
-// the revision 5 sheets for SAGE, XYM3E and XYM4E). Internal to iscwsa.cpp.
+// the revision 5 sheets for SAGE, XYM3E and XYM4E; the gyro model's accelerometer triad). Internal
+// to iscwsa.cpp; the gyro's own terms are in iscwsa_gyro.hpp.
 #pragma once
 
 #include <string>
@@ -14,6 +15,7 @@ struct WeightContext {
   double inc = 0, azi = 0, azm = 0;  // radians: inclination, azimuth of the position frame, magnetic azimuth
   double gravity = 9.80665, total_b_nT = 50000, dip = 0;  // dip in radians
   double course_m = 0;               // length of the course ending here (0 at the first station)
+  double cant = 0;                   // x-y accelerometers canted to the tool axis (rad; SPE 90408's Model #4)
 };
 
 // How a weighting function behaves near vertical.

@@ -36,6 +36,9 @@ Survey::Survey(SurveyOptions o) : options_(std::move(o)) {
   if (options_.field.total_b_uT) options_.errors.total_b_uT = *options_.field.total_b_uT;
   if (options_.field.dip_deg) options_.errors.dip_deg = *options_.field.dip_deg;
   if (options_.field.gravity_mps2) options_.errors.gravity_mps2 = *options_.field.gravity_mps2;
+  require(!options_.tool_code || !iscwsa::needs_latitude(*options_.tool_code) || std::isfinite(options_.latitude_deg),
+          "the error model " + (options_.tool_code ? options_.tool_code->name : std::string()) +
+              " gyrocompasses: it needs the well's latitude (--latitude)");
   if (options_.tool_code && options_.reference == AzimuthReference::Magnetic) {
     auto& terms = options_.tool_code->terms;
     terms.erase(std::remove_if(terms.begin(), terms.end(),
@@ -64,13 +67,15 @@ void Survey::add_model_uncertainty(SurveyRow& row) {
     for (std::size_t k = 0; k < geometry_.size(); ++k) {
       const PathPoint& p = k < rows_.size() ? rows_[k].point : row.point;
       const double magnetic = k < rows_.size() ? rows_[k].station.magnetic_azimuth_deg : s.magnetic_azimuth_deg;
+      const double t = k < rows_.size() ? rows_[k].station.t_s : s.t_s;
       stations.push_back({geometry_[k].md_m, geometry_[k].inclination_deg, geometry_[k].azimuth_deg, magnetic,
-                          p.tvd_m - options_.tie_in.z()});
+                          p.tvd_m - options_.tie_in.z(), t});
     }
     iscwsa::Field field;
     field.gravity_mps2 = options_.errors.gravity_mps2;
     field.total_b_nT = options_.errors.total_b_uT * 1000.0;
     field.dip_deg = options_.errors.dip_deg;
+    field.latitude_deg = options_.latitude_deg;
     const iscwsa::Result model = iscwsa::propagate(stations, *options_.tool_code, field);
     row.uncertainty.covariance += model.total.back();
     row.random_uncertainty.covariance += model.random.back();

@@ -19,6 +19,7 @@ struct SurveyCliOptions {
   std::optional<double> declination_deg, convergence_deg;
   double declination_sd_deg = 0;
   std::optional<double> gravity, total_field, dip;
+  std::optional<double> latitude_deg;  // the gyro model's gyrocompass terms
   std::string reference_file;
   std::optional<double> tol_gravity, tol_field, tol_dip;
   std::vector<std::string> skip_checks;

@@ -8,12 +8,15 @@
 // covariances add) or systematic, per well or global (common to the stations: their position
 // vectors add first). A few terms have their own forms: near vertical (inclination below the
 // model's limit) the azimuth-dependent ones take the vertical form of the model, and the long
-// course-length terms XCLA and XCLH of revision 5 act on position directly.
+// course-length terms XCLA and XCLH of revision 5 act on position directly. The gyro model (SPE
+// 90408) is the same framework with the gyro's own terms (iscwsa_gyro.hpp): a gyrocompass's at
+// each static station, and a continuous run's drift and random walk from its initialisation.
 //
 // Checked against ISCWSA's example workbooks (tests/data/iscwsa): every term's covariance at each
 // diagnostic depth within 0.1 %.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -31,11 +34,42 @@ struct Term {
   Propagation propagation = Propagation::Systematic;
 };
 
+// How a gyro tool surveys (the ISCWSA gyro model, SPE 90408): a gyrocompass at each station in
+// its static inclination range, and from the first station in its continuous range on, a run of
+// the gyros from one initialisation: a gyrocompass (the last static station before the run, or
+// the run's first station) whose azimuth error the run keeps, or a known azimuth (the EXT terms).
+enum class GyroInitialisation { Gyrocompass, Reference };
+
+struct GyroRunning {
+  double static_start_inc_deg = 0, static_end_inc_deg = 180;
+  bool continuous = false;
+  double continuous_start_inc_deg = 0, continuous_end_inc_deg = 180;
+  GyroInitialisation initialisation = GyroInitialisation::Gyrocompass;
+  // The inclination at which an initialising gyrocompass is evaluated (the codes' "Initialisation
+  // Inc"); NaN: the initialising station's own.
+  double initialisation_inc_deg = std::numeric_limits<double>::quiet_NaN();
+  // The time of a course: its length over the running speed, or (0) the stations' own times.
+  double running_speed_m_per_h = 0;
+  // The share of a station's gyro noise left in an initialising gyrocompass, a longer measurement
+  // (SPE 90408's examples: 0.5; OWSG GYRO-NS-CT 0.4082).
+  double noise_reduction_factor = 1;
+  // Where each gyro set's drift and random walk grow: over every course ending within its
+  // inclination range, from the first station on (held beyond); NaN: the run's range. A z gyro
+  // cannot see a turn toward horizontal, x-y gyros none toward vertical: SPE 90408's Model #4 runs
+  // its z gyro from the surface to 17 deg, then its x-y gyros to 150 deg.
+  double z_drift_from_inc_deg = std::numeric_limits<double>::quiet_NaN();
+  double z_drift_to_inc_deg = std::numeric_limits<double>::quiet_NaN();
+  double xy_drift_from_inc_deg = std::numeric_limits<double>::quiet_NaN();
+  double xy_drift_to_inc_deg = std::numeric_limits<double>::quiet_NaN();
+};
+
 struct ToolCode {
   std::string name;             // e.g. "MWD rev5"
   int revision = 5;             // 4: revision 4's derivatives; 5 and later: revision 5's
   double tortuosity_rad_per_m = 0.000572615;  // XCL terms (1 deg / 100 ft)
   std::vector<Term> terms;
+  double xy_accelerometer_cant_deg = 0;  // the AXY- terms of x-y accelerometers canted to the tool axis
+  GyroRunning gyro{};           // read by the gyro terms only
 };
 
 // The reference field and the survey's corrections at the well.
@@ -44,12 +78,15 @@ struct Field {
   double total_b_nT = 50000;
   double dip_deg = 60;
   double vertical_inc_limit_deg = 1e-4;  // below it a station is "vertical" for the model
+  double latitude_deg = std::numeric_limits<double>::quiet_NaN();  // a gyrocompass's terms need it
 };
 
 // One station: measured depth, inclination, the azimuth of the survey's position frame (true or
-// grid north) and the magnetic azimuth the sensors measured, and its true vertical depth.
+// grid north) and the magnetic azimuth the sensors measured, its true vertical depth, and its time
+// (s; the continuous gyro terms' time when the tool code gives no running speed).
 struct Station {
   double md_m = 0, inclination_deg = 0, azimuth_deg = 0, magnetic_azimuth_deg = 0, tvd_m = 0;
+  double t_s = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct Result {
@@ -70,11 +107,16 @@ Result propagate(const std::vector<Station>& stations, const ToolCode& tool, con
 
 // The built-in tool codes: "MWD" (ISCWSA MWD revision 5, OWSG values of 5.1.1: DEC-OH 0.21 deg),
 // "MWD:rev5" (the revision 5 example workbooks' values: DEC-OH 0.20 deg), "MWD:rev4", "MWD+IFR1"
-// (OWSG A005Mc, revision 5.1). Throws std::invalid_argument listing the names for another.
+// (OWSG A005Mc, revision 5.1); the gyro codes "GYRO-NS", "GYRO-NS-CT", "GYRO-MWD" (OWSG set A,
+// revision 5.1) and "GYRO:tactical", "GYRO:mems" (a strapdown tool of plumb's IMU grades run
+// continuously from a known azimuth). Throws std::invalid_argument listing the names for another.
 ToolCode builtin_tool_code(const std::string& name);
 std::vector<std::string> builtin_tool_codes();
 
 // The weighting functions this model knows.
 bool known_weight_function(const std::string& name);
+
+// Whether the tool code gyrocompasses (its terms need Field::latitude_deg).
+bool needs_latitude(const ToolCode& tool);
 
 }  // namespace plumb::survey::iscwsa

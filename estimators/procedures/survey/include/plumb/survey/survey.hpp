@@ -64,6 +64,7 @@ struct SurveyOptions {
   // The ISCWSA model (a tool code); without one, plumb's own propagation of `errors`. Its
   // declination terms (AZ, DBH) are left out of a magnetic survey, whose north is magnetic north.
   std::optional<iscwsa::ToolCode> tool_code;
+  double latitude_deg = std::numeric_limits<double>::quiet_NaN();  // the gyro model's gyrocompass terms
   double section_azimuth_deg = 0;      // in the survey's reference
   Eigen::Vector3d tie_in = Eigen::Vector3d::Zero();  // position of the first station (north, east, tvd)
 };
