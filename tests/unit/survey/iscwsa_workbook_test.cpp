@@ -18,28 +18,12 @@
 #include "plumb/survey/iscwsa.hpp"
 #include "plumb/survey/minimum_curvature.hpp"
 #include "plumb/survey/tool_code_file.hpp"
+#include "data_rows.hpp"
 
 namespace plumb::survey::iscwsa {
 namespace {
 
-const std::string kData = PLUMB_ISCWSA_DATA;
-
-std::vector<std::vector<std::string>> rows(const std::string& path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in) << path;
-  std::vector<std::vector<std::string>> out;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    out.push_back(csv::split_line(line));
-  }
-  return out;
-}
+const std::string kWorkbooks = PLUMB_ISCWSA_DATA;
 
 struct Example {
   std::vector<Station> stations;
@@ -50,7 +34,7 @@ struct Example {
 
 Example load(const std::string& name) {
   Example ex;
-  std::ifstream f(kData + "/" + name + ".field.txt");
+  std::ifstream f(kWorkbooks + "/" + name + ".field.txt");
   std::map<std::string, std::string> kv;
   for (std::string key, value; f >> key;) {
     if (key[0] == '#') {
@@ -67,13 +51,13 @@ Example load(const std::string& name) {
   const double declination = std::stod(kv.at("declination_deg"));
   ex.depth_unit_m = kv.at("depth_unit") == "ft" ? kFootM : 1.0;
   std::vector<StationGeometry> geometry;
-  for (const auto& r : rows(kData + "/" + name + ".wellpath.csv"))
+  for (const auto& r : test::data_rows(kWorkbooks + "/" + name + ".wellpath.csv"))
     geometry.push_back({std::stod(r[0]) * ex.depth_unit_m, std::stod(r[1]), std::stod(r[2])});
   const auto path = minimum_curvature(geometry);
   for (std::size_t k = 0; k < geometry.size(); ++k)
     ex.stations.push_back({geometry[k].md_m, geometry[k].inclination_deg, geometry[k].azimuth_deg,
                            geometry[k].azimuth_deg - declination, path[k].tvd_m});
-  std::ifstream tool(kData + "/" + name + ".tool.csv");
+  std::ifstream tool(kWorkbooks + "/" + name + ".tool.csv");
   ex.tool = read_tool_code(tool, name + ".tool.csv");
   if (name.find("rev4") != std::string::npos) ex.tool.revision = 4;
   return ex;
@@ -98,7 +82,7 @@ int compare(const std::string& name, Run run) {
   std::map<std::string, std::size_t> term;
   for (std::size_t i = 0; i < whole.codes.size(); ++i) term[whole.codes[i]] = i;
   int compared = 0;
-  for (const auto& row : rows(kData + "/" + name + ".expected.csv")) {
+  for (const auto& row : test::data_rows(kWorkbooks + "/" + name + ".expected.csv")) {
     const double md = std::stod(row[0]) * ex.depth_unit_m;
     const std::string& code = row[1];
     std::size_t k = 0;
@@ -202,7 +186,7 @@ TEST(IscwsaToolCode, RevisionsDifferWhereTheDocumentsDo) {
   EXPECT_EQ(find(builtin_tool_code("MWD:rev4"), "DECG"), 0.36);
   EXPECT_EQ(find(builtin_tool_code("MWD+IFR1"), "DEC-U"), 0.11);
   // The built-in revision 5 is the workbooks' model: the same terms and values.
-  std::ifstream in(kData + "/mwdrev5-iscwsa-1.tool.csv");
+  std::ifstream in(kWorkbooks + "/mwdrev5-iscwsa-1.tool.csv");
   const ToolCode workbook = read_tool_code(in, "workbook");
   const ToolCode builtin = builtin_tool_code("MWD:rev5");
   ASSERT_EQ(workbook.terms.size(), builtin.terms.size());

@@ -16,32 +16,17 @@
 #include "plumb/survey/iscwsa.hpp"
 #include "plumb/survey/minimum_curvature.hpp"
 #include "plumb/survey/tool_code_file.hpp"
+#include "data_rows.hpp"
 
 namespace plumb::survey::iscwsa {
 namespace {
 
-const std::string kData = PLUMB_SPE90408_DATA;
+const std::string kExamples = PLUMB_SPE90408_DATA;
 const std::string kWell = PLUMB_ISCWSA_DATA "/mwdrev5-iscwsa-1.wellpath.csv";
-
-std::vector<std::vector<std::string>> rows(const std::string& path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in) << path;
-  std::vector<std::vector<std::string>> out;
-  bool header = true;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    out.push_back(csv::split_line(line));
-  }
-  return out;
-}
 
 std::vector<Station> well1() {
   std::vector<StationGeometry> g;
-  for (const auto& r : rows(kWell)) g.push_back({std::stod(r[0]), std::stod(r[1]), std::stod(r[2])});
+  for (const auto& r : test::data_rows(kWell)) g.push_back({std::stod(r[0]), std::stod(r[1]), std::stod(r[2])});
   const auto path = minimum_curvature(g);
   std::vector<Station> s;
   for (std::size_t k = 0; k < g.size(); ++k)
@@ -59,10 +44,10 @@ TEST(Spe90408, ExampleModelsOnTestWell1MatchAppendixE) {
   field.latitude_deg = 60;
   std::map<int, Result> results;
   int checked = 0;
-  for (const auto& row : rows(kData + "/well1.expected.csv")) {
+  for (const auto& row : test::data_rows(kExamples + "/well1.expected.csv")) {
     const int model = std::stoi(row[0]);
     if (!results.count(model)) {
-      const std::string name = kData + "/model_" + std::to_string(model) + ".tool.csv";
+      const std::string name = kExamples + "/model_" + std::to_string(model) + ".tool.csv";
       std::ifstream in(name);
       results.emplace(model, propagate(stations, read_tool_code(in, name), field));
     }
