@@ -40,19 +40,19 @@ std::string clearance_fixed(double v, int decimals) {
 }
 
 // A well's name: its file's name without the folder and the extensions (.wellpath.csv, .csv).
-std::string well_name(const std::string& path) {
+std::string clearance_well_name(const std::string& path) {
   std::string n = std::filesystem::path(path).filename().string();
   const auto dot = n.find('.');
   return dot == std::string::npos || dot == 0 ? n : n.substr(0, dot);
 }
 
-std::string csv_header() {
+std::string clearance_csv_header() {
   return "reference_md_m,reference_north_m,reference_east_m,reference_tvd_m,offset,offset_md_m,offset_north_m,"
          "offset_east_m,offset_tvd_m,centre_to_centre_m,horizontal_bearing_deg,high_side_bearing_deg,"
          "reference_sigma_m,offset_sigma_m,sigma_s_m,masd_m,ellipse_separation_m,separation_factor,level\n";
 }
 
-std::string csv_row(const survey::StationClearance& c, const std::string& offset, const survey::ClearanceLevels& l) {
+std::string clearance_csv_row(const survey::StationClearance& c, const std::string& offset, const survey::ClearanceLevels& l) {
   std::ostringstream o;
   o.precision(10);
   o << c.reference.md_m << ',' << c.reference.position.x() << ',' << c.reference.position.y() << ','
@@ -69,14 +69,14 @@ int run_clearance(ClearanceCommandOptions o) {
   survey::check_levels(o.levels);
   if (!(o.reference_radius_m >= 0 && o.offset_radius_m >= 0)) throw std::invalid_argument("hole radii must be >= 0");
   o.model.first_station_surveyed = o.first_station == "surveyed";
-  const auto reference = survey::read_clearance_well(o.reference, well_name(o.reference), o.reference_radius_m, o.model);
+  const auto reference = survey::read_clearance_well(o.reference, clearance_well_name(o.reference), o.reference_radius_m, o.model);
   std::vector<survey::ClearanceWellFile> offsets;
   for (const auto& path : o.offsets) {
-    offsets.push_back(survey::read_clearance_well(path, well_name(path), o.offset_radius_m, o.model));
+    offsets.push_back(survey::read_clearance_well(path, clearance_well_name(path), o.offset_radius_m, o.model));
     std::cerr << "plumb clearance: " << offsets.back().well.name << ": " << offsets.back().well.stations.size()
               << " station(s), error model " << offsets.back().error_model << '\n';
   }
-  std::string table = csv_header();
+  std::string table = clearance_csv_header();
   std::cout << "# reference " << reference.well.name << " (" << reference.well.stations.size() << " stations, error model "
             << reference.error_model << "); k " << o.rule.k << ", sigma_pa " << o.rule.sigma_pa_m << " m, S_m "
             << o.rule.surface_margin_m << " m; warning SF < " << o.levels.warning_sf << ", alarm SF < "
@@ -91,7 +91,7 @@ int run_clearance(ClearanceCommandOptions o) {
     std::string worst_name;
     for (const auto& off : offsets) {
       const auto c = survey::station_clearance(station, reference.well.radius_m, off.well, o.rule);
-      table += csv_row(c, off.well.name, o.levels);
+      table += clearance_csv_row(c, off.well.name, o.levels);
       if (worst_name.empty() || c.separation_factor < worst.separation_factor) {
         worst = c;
         worst_name = off.well.name;
