@@ -32,6 +32,7 @@ void add_estimate_verb(CLI::App& app, Verbs& verbs);   // estimate (offline, CSV
 void add_compare_verb(CLI::App& app, Verbs& verbs);    // compare (scenario grid, CRB, plots; or a recorded run)
 void add_recording_verbs(CLI::App& app, Verbs& verbs); // record (and --repair), play, info, export
 void add_survey_verb(CLI::App& app, Verbs& verbs);     // survey (offline: stations, QC, minimum curvature, uncertainty)
+void add_clearance_verb(CLI::App& app, Verbs& verbs);  // clearance (offline anti-collision: ISCWSA separation factor)
 void add_status_verb(CLI::App& app, Verbs& verbs);     // status (components seen on the network)
 void add_config_verbs(CLI::App& app, Verbs& verbs);    // config check (DDS XML files for other applications)
 void add_security_verbs(CLI::App& app, Verbs& verbs);  // security create-keystore | create-identity | create-permissions | check

@@ -116,6 +116,19 @@ void vertical_form(const std::vector<Rad>& s, std::size_t k, const detail::Weigh
   }
 }
 
+// The vertical form at a surveyed first station: moved sideways by the half course below it.
+void first_station_vertical_form(const std::vector<Rad>& s, const detail::WeightFunction& wf, double mag,
+                                 const Field& field, TermEffect& e) {
+  const double below = (s[1].md - s[0].md) / 2;
+  if (wf.vertical == Vertical::AccelerometerXY) {
+    e.full[0] = below * mag / field.gravity_mps2 * Vector3d(-std::sin(s[0].azi), std::cos(s[0].azi), 0);
+    return;
+  }
+  const int axis = wf.vertical == Vertical::MisalignmentNorth ? 0 : 1;
+  e.full[0].setZero();
+  e.full[0](axis) = (wf.course_coefficient ? course_coefficient(s, 0) : 1.0) * below * mag;
+}
+
 TermEffect sensor_term(const std::vector<Rad>& s, const Derivatives& d, const Term& t, const Field& field,
                        const ToolCode& tool) {
   const int revision = tool.revision;
@@ -136,7 +149,17 @@ TermEffect sensor_term(const std::vector<Rad>& s, const Derivatives& d, const Te
         if (!std::isfinite(w(i))) w(i) = 0;
       e.dia[k] = w;
     }
-    if (k == 0) continue;  // the tie-in: no error of its own
+    if (k == 0) {
+      // A tie-in has no error of its own; a surveyed first station's direction error tilts the
+      // half course below it (its position, depth included, is given).
+      if (field.first_station_surveyed && n > 1) {
+        if (vertical)
+          first_station_vertical_form(s, wf, mag, field, e);
+        else
+          e.full[0] = d.leaving[0].rightCols<2>() * e.dia[0].tail<2>();
+      }
+      continue;
+    }
     if (vertical) {
       vertical_form(s, k, wf, mag, field, revision, e);
     } else {

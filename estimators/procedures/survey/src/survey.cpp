@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include "plumb/core/attitude.hpp"
 
@@ -76,6 +78,7 @@ void Survey::add_model_uncertainty(SurveyRow& row) {
     field.total_b_nT = options_.errors.total_b_uT * 1000.0;
     field.dip_deg = options_.errors.dip_deg;
     field.latitude_deg = options_.latitude_deg;
+    field.first_station_surveyed = options_.first_station_surveyed;
     const iscwsa::Result model = iscwsa::propagate(stations, *options_.tool_code, field);
     row.uncertainty.covariance += model.total.back();
     row.random_uncertainty.covariance += model.random.back();
@@ -148,6 +151,31 @@ const SurveyRow& Survey::add(const Station& s) {
   if (!row.qc.pass) ++failed_qc_;
   rows_.push_back(std::move(row));
   return rows_.back();
+}
+
+PositionUncertainty Survey::uncertainty_between(std::size_t course, double md_m, double inclination_deg,
+                                                double azimuth_deg) const {
+  if (course + 1 >= rows_.size()) throw std::out_of_range("survey has no course after station " + std::to_string(course));
+  const Station& a = rows_[course].station;
+  const Station& b = rows_[course + 1].station;
+  if (md_m <= a.md_m + kDuplicateDepthM) return rows_[course].uncertainty;
+  if (md_m >= b.md_m - kDuplicateDepthM) return rows_[course + 1].uncertainty;
+  const double f = (md_m - a.md_m) / (b.md_m - a.md_m);
+  const auto lerp = [f](double x, double y) { return x + f * (y - x); };
+  Survey above(*this);  // the stations down to the course's start, then the point
+  above.rows_.resize(course + 1);
+  above.geometry_.resize(course + 1);
+  above.sigma_.resize(course + 1);
+  Station here;
+  here.t_s = lerp(a.t_s, b.t_s);
+  here.md_m = md_m;
+  here.md_sd_m = lerp(a.md_sd_m, b.md_sd_m);
+  here.inclination_deg = inclination_deg;
+  here.inclination_sd_deg = lerp(a.inclination_sd_deg, b.inclination_sd_deg);
+  // The sensors' azimuth: the survey's less its (constant) correction from magnetic.
+  here.magnetic_azimuth_deg = azimuth_deg - (rows_[course].azimuth_deg - a.magnetic_azimuth_deg);
+  here.azimuth_sd_deg = lerp(a.azimuth_sd_deg, b.azimuth_sd_deg);
+  return above.add(here).uncertainty;
 }
 
 }  // namespace plumb::survey

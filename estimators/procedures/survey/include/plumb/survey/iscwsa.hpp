@@ -79,6 +79,11 @@ struct Field {
   double dip_deg = 60;
   double vertical_inc_limit_deg = 1e-4;  // below it a station is "vertical" for the model
   double latitude_deg = std::numeric_limits<double>::quiet_NaN();  // a gyrocompass's terms need it
+  // Whether the first station is a survey of its own (its errors tilt the half course below it) or
+  // a tie-in point whose direction is given (no error of its own). ISCWSA's error-model workbooks
+  // tie in; the ISCWSA clearance set (tests/data/iscwsa_clearance) surveys from MD 0 and from a
+  // sidetrack's kick-off, and its listings count that station's errors.
+  bool first_station_surveyed = false;
 };
 
 // One station: measured depth, inclination, the azimuth of the survey's position frame (true or

@@ -65,6 +65,9 @@ struct SurveyOptions {
   // declination terms (AZ, DBH) are left out of a magnetic survey, whose north is magnetic north.
   std::optional<iscwsa::ToolCode> tool_code;
   double latitude_deg = std::numeric_limits<double>::quiet_NaN();  // the gyro model's gyrocompass terms
+  // The ISCWSA model's first station: a tie-in point (false) or a survey whose errors tilt the
+  // half course below it (iscwsa::Field::first_station_surveyed).
+  bool first_station_surveyed = false;
   double section_azimuth_deg = 0;      // in the survey's reference
   Eigen::Vector3d tie_in = Eigen::Vector3d::Zero();  // position of the first station (north, east, tvd)
 };
@@ -88,6 +91,13 @@ class Survey {
   // is impossible: depth going backwards or repeated, inclination outside [0, 180], azimuth not finite.
   const SurveyRow& add(const Station& station);
   const std::vector<SurveyRow>& rows() const { return rows_; }
+  // The position uncertainty at a point between stations `course` and `course + 1`, as if a station
+  // had been surveyed there in the direction the path has (azimuth in the survey's reference): the
+  // error model between stations, where a clearance scan finds an offset well's closest point.
+  // Its measured noise is interpolated between the two stations'. Throws std::out_of_range for a
+  // course the survey does not have.
+  PositionUncertainty uncertainty_between(std::size_t course, double md_m, double inclination_deg,
+                                          double azimuth_deg) const;
   const SurveyOptions& options() const { return options_; }
   std::size_t failed_qc() const { return failed_qc_; }
 

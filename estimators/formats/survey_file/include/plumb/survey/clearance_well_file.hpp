@@ -1,0 +1,37 @@
+// The wells of a clearance scan, from files: a plumb survey file (its rows' positions and position
+// covariances, as the survey that wrote it made them), or a station list CSV (md_m,
+// inclination_deg, azimuth_deg in the wells' common north), surveyed here through an error model
+// from the position its first row gives (north_m, east_m, tvd_m: the well's slot or tie-in).
+#pragma once
+
+#include <limits>
+#include <string>
+
+#include "plumb/survey/clearance.hpp"
+
+namespace plumb::survey {
+
+// How a station list is surveyed: its error model (a built-in tool code or a tool code file) and
+// the reference field the model weighs.
+struct StationListModel {
+  std::string error_model = "MWD";
+  double gravity_mps2 = kStandardGravity, total_b_uT = 50, dip_deg = 60;
+  double latitude_deg = std::numeric_limits<double>::quiet_NaN();
+  bool first_station_surveyed = true;  // a well surveyed from its first station (docs/surveys.md)
+};
+
+struct ClearanceWellFile {
+  ClearanceWell well;
+  std::string azimuth_reference;  // "true" or "grid" (a survey file's), or "as listed" (a station list)
+  std::string error_model;        // the tool code the covariances come from
+};
+
+// Reads `path`: a survey file when its first line is the survey format line, else a station list.
+// A survey file's covariance between its stations is interpolated linearly in measured depth (its
+// options are not in the file); a station list's is its error model's at the point. Throws
+// std::runtime_error naming the file (and line) for anything it cannot use: a magnetic survey (its
+// north moves with the field), a station list without its first row's position, a bad number.
+ClearanceWellFile read_clearance_well(const std::string& path, const std::string& name, double radius_m,
+                                      const StationListModel& model);
+
+}  // namespace plumb::survey

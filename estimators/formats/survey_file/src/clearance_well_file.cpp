@@ -1,0 +1,143 @@
+#include "plumb/survey/clearance_well_file.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "plumb/core/number.hpp"
+#include "plumb/csv/files.hpp"
+#include "plumb/survey/survey_file.hpp"
+#include "plumb/survey/survey_inputs.hpp"
+#include "plumb/survey/tool_code_file.hpp"
+
+namespace plumb::survey {
+namespace {
+
+// The rows of a CSV with named columns, as text.
+struct ClearanceCsv {
+  std::map<std::string, std::size_t> columns;
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::size_t> lines;
+};
+
+ClearanceCsv clearance_read_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open '" + path + "'");
+  ClearanceCsv t;
+  std::size_t line_no = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line[0] == '#') continue;
+    auto cells = csv::split_line(line);
+    if (t.columns.empty()) {
+      for (std::size_t i = 0; i < cells.size(); ++i) t.columns[cells[i]] = i;
+      continue;
+    }
+    t.rows.push_back(std::move(cells));
+    t.lines.push_back(line_no);
+  }
+  if (t.columns.empty()) throw std::runtime_error(path + ": no header line");
+  if (t.rows.empty()) throw std::runtime_error(path + ": no stations");
+  return t;
+}
+
+double clearance_number(const ClearanceCsv& t, std::size_t row, const std::string& column, const std::string& path) {
+  const auto it = t.columns.find(column);
+  if (it == t.columns.end()) throw std::runtime_error(path + ": no column '" + column + "' in the header");
+  const auto& cells = t.rows[row];
+  const std::string text = it->second < cells.size() ? cells[it->second] : std::string();
+  const auto v = parse_number(text, true);
+  if (!v || !std::isfinite(*v))
+    throw std::runtime_error(path + ":" + std::to_string(t.lines[row]) + ": column '" + column + "': bad number '" +
+                             text + "'");
+  return *v;
+}
+
+bool clearance_is_survey_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open '" + path + "'");
+  std::string first;
+  std::getline(in, first);
+  return first.rfind("# plumb survey", 0) == 0;
+}
+
+ClearanceWellFile clearance_from_survey_file(const std::string& path, const std::string& name, double radius_m) {
+  const ClearanceCsv t = clearance_read_csv(path);
+  ClearanceWellFile f;
+  f.well.name = name;
+  f.well.radius_m = radius_m;
+  const auto text = [&](std::size_t r, const std::string& c) {
+    const auto it = t.columns.find(c);
+    return it == t.columns.end() || it->second >= t.rows[r].size() ? std::string() : t.rows[r][it->second];
+  };
+  f.azimuth_reference = text(0, "azimuth_reference");
+  f.error_model = text(0, "error_model");
+  if (f.azimuth_reference == "magnetic")
+    throw std::runtime_error(path + ": a magnetic survey (its north moves with the field): survey it with --reference "
+                                    "true or grid for a clearance scan");
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const auto n = [&](const std::string& c) { return clearance_number(t, r, c, path); };
+    WellPoint p;
+    p.md_m = n("md_m");
+    p.inclination_deg = n("inclination_deg");
+    p.azimuth_deg = n("azimuth_deg");
+    p.position = {n("north_m"), n("east_m"), n("tvd_m")};
+    p.covariance << n("cov_nn"), n("cov_ne"), n("cov_nd"), n("cov_ne"), n("cov_ee"), n("cov_ed"), n("cov_nd"),
+        n("cov_ed"), n("cov_dd");
+    if (!f.well.stations.empty() && !(p.md_m > f.well.stations.back().md_m))
+      throw std::runtime_error(path + ":" + std::to_string(t.lines[r]) + ": measured depth does not increase");
+    f.well.stations.push_back(p);
+  }
+  return f;
+}
+
+iscwsa::ToolCode clearance_tool_code(const std::string& name) {
+  const auto builtin = iscwsa::builtin_tool_codes();
+  for (const auto& b : builtin)
+    if (b == name) return iscwsa::builtin_tool_code(name);
+  std::ifstream in(name);
+  if (!in) return iscwsa::builtin_tool_code(name);  // names the built-in codes in its error
+  return iscwsa::read_tool_code(in, name);
+}
+
+ClearanceWellFile clearance_from_station_list(const std::string& path, const std::string& name, double radius_m,
+                                              const StationListModel& model) {
+  const ClearanceCsv t = clearance_read_csv(path);
+  for (const char* c : {"north_m", "east_m", "tvd_m"})
+    if (!t.columns.count(c))
+      throw std::runtime_error(path + ": no column '" + std::string(c) +
+                               "': a station list's first row places the well (north_m, east_m, tvd_m)");
+  SurveyOptions o;
+  o.reference = AzimuthReference::Grid;  // the azimuths as listed: no correction
+  o.north.declination_known = o.north.convergence_known = true;
+  o.field.gravity_mps2 = model.gravity_mps2;
+  o.field.total_b_uT = model.total_b_uT;
+  o.field.dip_deg = model.dip_deg;
+  o.checks = {false, false, false};
+  o.tool_code = clearance_tool_code(model.error_model);
+  o.latitude_deg = model.latitude_deg;
+  o.first_station_surveyed = model.first_station_surveyed;
+  o.tie_in = {clearance_number(t, 0, "north_m", path), clearance_number(t, 0, "east_m", path),
+              clearance_number(t, 0, "tvd_m", path)};
+  Survey survey(o);
+  try {
+    for (const Station& s : read_station_csv(path)) survey.add(s);
+  } catch (const StationError& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+  return {clearance_well(survey, name, radius_m), "as listed", o.tool_code->name};
+}
+
+}  // namespace
+
+ClearanceWellFile read_clearance_well(const std::string& path, const std::string& name, double radius_m,
+                                      const StationListModel& model) {
+  if (clearance_is_survey_file(path)) return clearance_from_survey_file(path, name, radius_m);
+  return clearance_from_station_list(path, name, radius_m, model);
+}
+
+}  // namespace plumb::survey
