@@ -125,6 +125,7 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"stop_settle_s", "2", "without depth, a drilling string that slows over seconds looks still before it is: for this long after a stop is confirmed its velocity is zero only within rop_sd_mps, and a stop that ends sooner was none (s; 0: every stop at once)"},
       {"rop_sd_mps", "0.02", "rate of penetration, 1 sigma (m/s): a still period's end is seen late when the string speeds up slowly, and the tool may already move at this speed"},
       {"axial_accel_sd_mps2", "0.02", "without depth, how fast the rate of penetration changes: the string's acceleration along the tool axis over a second, 1 sigma (m/s^2); while the tool moves the navigator holds its own along-axis acceleration to it, which keeps its speed and the tilt from drifting together (0: not)"},
+      {"max_rop_m_per_h", "180", "without depth or a pipe tally, the fastest the string is drilled (m/h): a slide that starts smoothly and runs straight looks still, so through every stop the position's sigma grows at this speed and the attitude's allows for the speed-up it may hide (0: not allowed for)"},
       {"depth_sd_m", "", "measured depth noise, 1 sigma (m); empty: 0.01 or what the depth reports show before alignment, whichever is larger"},
       {"depth_interval_s", "1", "seconds between measured-depth updates"},
       {"pipe_joint_m", "", "no depth sensor: every stop after the alignment is a connection that ran in one joint of this length (m)"},
@@ -228,6 +229,7 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   c.stop_settle_s = r.number("stop_settle_s", 0, 600);
   c.rop_sd = r.number("rop_sd_mps", 0, 10);
   c.axial_accel_sd = r.number("axial_accel_sd_mps2", 0, 100);
+  c.max_rop = r.number("max_rop_m_per_h", 0, 3600) / 3600.0;
   const std::optional<double> depth_sd = optional_number(r, given, "depth_sd_m", 1e-9, 100);
   c.depth_sd = depth_sd.value_or(0.01);
   c.depth_noise_stated = depth_sd.has_value();

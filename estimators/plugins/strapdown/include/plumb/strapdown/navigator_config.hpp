@@ -73,6 +73,9 @@ struct NavigatorConfig {
   // second, 1 sigma (m/s^2). Without depth the navigator holds its own along-axis acceleration to it
   // while the tool moves (0: not).
   double axial_accel_sd = 0.02;
+  // The fastest the string is drilled (m/s): without depth or a tally, a stop may be a slide this
+  // fast that the sensors cannot see (unseen_motion.hpp). 0: not allowed for.
+  double max_rop = 0.05;
   double depth_sd = 0.01;              // m
   double depth_interval_s = 1;
   // No depth sensor: a pipe tally. Joint i is run in after stop i (the alignment's stop is stop 0),

@@ -33,6 +33,7 @@ struct RowContext {
   std::uint32_t stops = 0;              // still periods with zero-velocity updates so far
   std::string azimuth_reference;
   std::string field_warning;            // why the last stop gave no azimuth update
+  std::string motion_warning;           // the along-hole motion is not measured (unseen_motion.hpp)
 };
 
 class OutputRows {
