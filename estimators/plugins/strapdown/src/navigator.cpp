@@ -1,5 +1,6 @@
 #include "plumb/strapdown/navigator.hpp"
 
+#include <cmath>
 #include <optional>
 #include <utility>
 
@@ -202,6 +203,11 @@ RowContext Navigator::row_context() const {
   c.azimuth_reference = aligner_.azimuth_reference();
   c.field_warning = stops_.field_warning();
   c.motion_warning = unseen_.row_warning();
+  if (aligner_.use_mag() && aligner_.field().dip) {
+    // Magnetic north lies at the declination in a true frame, at 0 in a magnetic one.
+    const double dip = *aligner_.field().dip, d = config_.declination.value_or(0.0);
+    c.field_direction_n = Eigen::Vector3d(std::cos(dip) * std::cos(d), std::cos(dip) * std::sin(d), std::sin(dip));
+  }
   return c;
 }
 

@@ -135,6 +135,7 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"lever_arm_sd_m", "0.01", "how far the accelerometers may sit off the tool axis, 1 sigma (m): turning, they feel its centripetal acceleration; 0: not modelled"},
       {"imu_samples", "instant", "what a reading is: instant (the value at its time stamp) or mean (the mean over its interval, stamped at the middle, as integrating sensors and decimating converters report)"},
       {"time_tag_sd_s", "0.0005", "how well a reading's time stamp gives the instant it stands for, 1 sigma (s): the toolface of a turning tool is uncertain by its rate times this"},
+      {"toolface_switch_deg", "5", "below this inclination the rows name the toolface from north as the one to steer by, with its sigma: the magnetic toolface (magnetic_toolface_deg, from the navigator's attitude and the reference field) or, without a magnetometer, the gyro toolface; the gravity toolface and the azimuth are weakly defined there (deg; 0: never)"},
       {"smooth", "0", "offline backward (RTS) smoother: push() emits nothing, flush() emits every row smoothed"},
       {"max_gap_s", "1", "a time step longer than this is a gap: reported, bridged by prediction only (s)"},
       {"gyro_time_offset_s", "0", "gyro readings were measured this long after their time stamp (s)"},
@@ -243,6 +244,7 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   }
   c.samples_are_means = sample_kind == "mean";
   c.time_tag_sd = r.number("time_tag_sd_s", 0, 1);
+  c.toolface_switch = r.number("toolface_switch_deg", 0, 90) * kDegToRad;
   c.smooth = r.boolean("smooth");
   c.max_gap_s = r.number("max_gap_s", 1e-6, 1e6);
   c.gyro_time_offset_s = r.number("gyro_time_offset_s", -1, 1);

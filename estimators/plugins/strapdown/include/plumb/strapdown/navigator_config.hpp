@@ -107,6 +107,9 @@ struct NavigatorConfig {
   // delay), 1 sigma (s): the toolface of a tool turning at w is uncertain by w times this.
   double time_tag_sd = 0.5e-3;
   // Output and offline.
+  // Below this inclination the rows name the toolface from north (magnetic, or gyro without a
+  // magnetometer) as the one to steer by, with its sigma (rad; 0: never).
+  double toolface_switch = 5.0 * 3.14159265358979323846 / 180.0;
   bool smooth = false;
   double max_gap_s = 1.0;
   double gyro_time_offset_s = 0;       // gyro stamps lag the true gyro time by this (s)
