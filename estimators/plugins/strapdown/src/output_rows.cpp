@@ -78,7 +78,7 @@ std::string OutputRows::toolface_from_north(Estimate& e, const Eigen::Matrix3d& 
     return format("near vertical (I %.1f deg): steer by the magnetic toolface magnetic_toolface_deg (sigma %.2f deg)",
                   inclination * kRadToDeg, sd_deg);
   }
-  return format("near vertical (I %.1f deg): steer by the gyro toolface from north, %.2f deg (sigma %.2f deg)",
+  return format("near vertical (I %.1f deg): steer by the gyro toolface from north %.2f deg (sigma %.2f deg)",
                 inclination * kRadToDeg, m.toolface * kRadToDeg, sd_deg);
 }
 
