@@ -18,6 +18,7 @@ namespace plumb::strapdown::test {
 struct RunMetrics {
   std::size_t rows = 0, valid_rows = 0;
   double max_inc_err_deg = 0, max_azi_err_deg = 0, max_tf_err_deg = 0;
+  double max_axis_err_deg = 0;  // the angle between the estimated and the true tool axis
   double end_position_err_m = 0, drilled_m = 0;
   double sum_z2 = 0;   // sum of (error / sigma)^2 over I, A, T of every valid row
   double n_z = 0;
@@ -99,6 +100,18 @@ inline estimator::Parameters parameters_for(const sim::DrillingScenario& s) {
   return p;
 }
 
+// The angle between a row's tool axis and the truth's: the direction position needs, which a weak
+// azimuth near vertical leaves well defined (an invalid azimuth counts as the truth's).
+inline double axis_error_deg(const Estimate& e, const TruthSample& tr) {
+  const auto axis = [](double inc_deg, double azi_deg) {
+    const double i = inc_deg * kDeg, a = azi_deg * kDeg;
+    return Eigen::Vector3d(std::sin(i) * std::cos(a), std::sin(i) * std::sin(a), std::cos(i));
+  };
+  const Eigen::Vector3d est = axis(e.inclination_deg, e.azimuth_valid ? e.azimuth_deg : tr.azimuth_deg);
+  const Eigen::Vector3d truth = axis(tr.inclination_deg, tr.azimuth_deg);
+  return std::atan2(est.cross(truth).norm(), est.dot(truth)) / kDeg;
+}
+
 // Runs the navigator over samples and scores its rows against the truth.
 inline RunMetrics score_drilling(const std::vector<Sample>& samples, const std::vector<TruthSample>& truth,
                                  double rate, double drilled_m, const estimator::Parameters& params,
@@ -137,6 +150,7 @@ inline RunMetrics score_drilling(const std::vector<Sample>& samples, const std::
     const double da = wrap_deg_180(e.azimuth_deg - tr.azimuth_deg);
     const double dt = wrap_deg_180(e.gravity_toolface_deg - tr.toolface_deg);
     m.max_inc_err_deg = std::max(m.max_inc_err_deg, std::abs(di));
+    m.max_axis_err_deg = std::max(m.max_axis_err_deg, axis_error_deg(e, tr));
     if (e.azimuth_valid) m.max_azi_err_deg = std::max(m.max_azi_err_deg, std::abs(da));
     if (e.toolface_valid) m.max_tf_err_deg = std::max(m.max_tf_err_deg, std::abs(dt));
     int angle = 0;

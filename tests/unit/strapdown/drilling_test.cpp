@@ -104,7 +104,10 @@ TEST(StrapdownDrilling, SmootherWithoutMagnetometer) {
 // Without depth, a sliding string that speeds up over seconds is seen moving only seconds after it
 // moved: zero-velocity updates over those seconds pin a velocity that was not zero, the filter puts
 // the ramp into the accelerometer bias, and the slide drifts tens of metres with a sigma that does
-// not say so. The filter running stop_lag_s behind the detector takes those updates back.
+// not say so. The filter running stop_lag_s behind the detector takes those updates back. (Measured
+// without the allowance for a slide that a stop may hide, max_rop_m_per_h, which takes the
+// speed-up out of the bias by itself: with it, the end is 0.5-11.7 m off with the lag and 3.8-13.3 m
+// without, end RMS(error/sigma) 0.04-0.93 and 0.30-1.09; unseen_motion_test.cpp.)
 TEST(StrapdownDrilling, SlowStartWithoutDepthIsTakenBack) {
   for (std::uint64_t seed : {1, 2, 3, 4}) {
     auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::named("tactical"), 100, seed);
@@ -112,6 +115,7 @@ TEST(StrapdownDrilling, SlowStartWithoutDepthIsTakenBack) {
     // ends in the stop after it.
     scenario.plan.segments = {sim::DrillSegment::drill(8, 0.05, 8, 0), sim::DrillSegment::stop(5)};
     estimator::Parameters params = parameters_for(scenario);
+    params["max_rop_m_per_h"] = "0";
     const RunMetrics lagged = run_drilling(scenario, params, false);
     params["stop_lag_s"] = "0";
     const RunMetrics at_once = run_drilling(scenario, params, false);

@@ -50,4 +50,31 @@ AttitudeWithSigma attitude_with_sigma(const Eigen::Matrix3d& c_bn, const Eigen::
   return out;
 }
 
+ReferenceToolface reference_toolface(const Eigen::Matrix3d& c_bn, const Eigen::Matrix3d& p_att,
+                                     const Eigen::Vector3d& ref_n, double min_sin_angle) {
+  const auto toolface_of = [&ref_n](const Eigen::Matrix3d& c) {
+    const Eigen::Vector3d r = c.transpose() * ref_n;
+    return std::atan2(-r.y(), r.x());
+  };
+  ReferenceToolface out;
+  const Eigen::Vector3d r = c_bn.transpose() * ref_n;
+  out.valid = std::hypot(r.x(), r.y()) > min_sin_angle * r.norm();
+  const double m = toolface_of(c_bn);
+  out.toolface = m < 0 ? m + 2 * std::numbers::pi : m;
+  if (out.toolface >= 2 * std::numbers::pi) out.toolface = 0;
+  // The same central differences as angle_jacobian().
+  constexpr double kStep = 1e-6;
+  Eigen::RowVector3d j;
+  for (int i = 0; i < 3; ++i) {
+    Eigen::Vector3d e = Eigen::Vector3d::Zero();
+    e[i] = kStep;
+    j[i] = wrap_pi(toolface_of(quaternion_from_rotation_vector(e).toRotationMatrix() * c_bn) -
+                   toolface_of(quaternion_from_rotation_vector(-e).toRotationMatrix() * c_bn)) /
+           (2 * kStep);
+  }
+  out.sd = std::sqrt(std::max(0.0, (j * p_att * j.transpose())(0, 0)));
+  if (!std::isfinite(out.sd)) out.sd = 0;
+  return out;
+}
+
 }  // namespace plumb::strapdown

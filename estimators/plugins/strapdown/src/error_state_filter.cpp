@@ -212,6 +212,16 @@ void ErrorStateFilter::predict(const StateMatrix& phi, double dt, const ProcessN
   p_.diagonal() += half_q;
 }
 
+void add_noise(StateMatrix& p, const Eigen::Matrix3d& velocity, const Eigen::Vector4d& displacement) {
+  p.block<3, 3>(kVel, kVel) += velocity;
+  if (displacement.isZero(0.0)) return;
+  const Eigen::Matrix4d add = displacement * displacement.transpose();
+  p.block<3, 3>(kPos, kPos) += add.topLeftCorner<3, 3>();
+  p.block<3, 1>(kPos, kDistance) += add.block<3, 1>(0, 3);
+  p.block<1, 3>(kDistance, kPos) += add.block<1, 3>(3, 0);
+  p(kDistance, kDistance) += add(3, 3);
+}
+
 void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bias, Eigen::Vector3d& accel_bias,
                Eigen::Vector2d* lever, Eigen::Vector3d* gyro_spin, double* mag_axial, Eigen::Vector2d* gyro_g) {
   // C(true) = (I + [phi x])^-1 C(est) = exp(-[phi x]) C(est): a rotation on the navigation side.

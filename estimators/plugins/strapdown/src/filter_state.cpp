@@ -104,7 +104,7 @@ void FilterState::step(const InputReading& prev, const InputReading& in, const I
   mech_.step(a, b, prev2 != nullptr ? &before : nullptr);
 }
 
-FilterState::Prediction FilterState::predict(const ProcessNoise& noise) {
+FilterState::Prediction FilterState::predict(const ProcessNoise& noise, const UnseenMotionNoise& unseen) {
   mech_.finish(x_, &integrals_);
   Prediction p{ErrorStateFilter::transition(integrals_, mech_.earth_rate()), integrals_.dt, noise};
   kf_.predict(p.phi, p.dt, noise);
@@ -113,8 +113,10 @@ FilterState::Prediction FilterState::predict(const ProcessNoise& noise) {
     // each direction (the mechanization gathers it for a drilling tool).
     const Eigen::Vector3d axis = x_.q.toRotationMatrix().col(2);
     p.velocity_noise = (0.5 * integrals_.unresolved_dv2) * (Eigen::Matrix3d::Identity() - axis * axis.transpose());
-    kf_.covariance().block<3, 3>(kVel, kVel) += p.velocity_noise;
   }
+  p.velocity_noise += unseen.velocity;
+  p.displacement_noise = unseen.displacement;
+  add_noise(kf_.covariance(), p.velocity_noise, p.displacement_noise);
   integrals_.clear();
   correction_.setZero();
   return p;

@@ -1,6 +1,8 @@
 #include "plumb/strapdown/navigator.hpp"
 
+#include <cmath>
 #include <optional>
+#include <utility>
 
 namespace plumb::strapdown {
 
@@ -32,6 +34,13 @@ void Navigator::reset() {
   stops_.reset(config_);
   rows_.reset(config_);
   lag_.reset(config_.stop_lag_s);
+  unseen_.reset(config_);
+}
+
+std::vector<std::string> Navigator::take_notices() {
+  std::vector<std::string> notices = watch_.take_notices();
+  for (std::string& n : unseen_.take_notices()) notices.push_back(std::move(n));
+  return notices;
 }
 
 // ---- input -------------------------------------------------------------------------------------
@@ -82,7 +91,10 @@ void Navigator::process(const Input& in, std::vector<Estimate>& out) {
 void Navigator::navigate(const Input& in, const StillnessState& still, std::vector<Estimate>& out) {
   rows_.add_reading(in);
   filter_.step(*prev_, in, prev2_ ? &*prev2_ : nullptr, config_.samples_are_means, checks_.dt_nominal());
-  if (in.depth) stops_.take_depth(in.t, *in.depth, prev_->depth.has_value(), filter_);
+  if (in.depth) {
+    stops_.take_depth(in.t, *in.depth, prev_->depth.has_value(), filter_);
+    unseen_.note_depth(in.t);
+  }
   still_state_ = still;
   stops_.follow(in, still_state_, counters_);
   const double kf_dt = 1.0 / config_.kf_rate_hz;
@@ -98,6 +110,7 @@ void Navigator::navigate(const Input& in, const StillnessState& still, std::vect
 }
 
 void Navigator::before_alignment(const Input& in, std::vector<Estimate>& out) {
+  if (in.depth) unseen_.note_depth(in.t);
   still_state_ = watch_.before_alignment(in, aligner_.field().total_uT);
   if (still_state_.started) count("still_periods");
   if (aligner_.take(in, still_state_)) align(in);
@@ -133,6 +146,7 @@ void Navigator::align(const Input& in) {
   filter_.reset_covariance(aligner_.initial_covariance(coarse->stats.mean_f(), coarse->heading_sd, sd_mean_f,
                                                        watch_.depth_sd(), filter_.lever_model(), drilling_tool));
   aligned_ = true;
+  unseen_.at_alignment(in.t, drilling_tool);
   watch_.on_aligned(in.t, lag_.lag_s() > 0);
   last_epoch_t_ = in.t;
   filter_.clear_correction();
@@ -148,7 +162,11 @@ void Navigator::align(const Input& in) {
 
 void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   // The full update of the two-rate mechanization, then the filter at the same instant.
-  const FilterState::Prediction prediction = filter_.predict(stops_.process_noise(filter_.noise(), still_state_, filter_.drilling_tool()));
+  // Without depth or a tally, a stop may be a slide the sensors cannot see.
+  const UnseenMotionNoise unseen =
+      unseen_.at_epoch(filter_.state().q.toRotationMatrix().col(2), still_state_, in.t, in.t - last_epoch_t_);
+  const FilterState::Prediction prediction =
+      filter_.predict(stops_.process_noise(filter_.noise(), still_state_, filter_.drilling_tool()), unseen);
   last_epoch_t_ = in.t;
   stops_.at_epoch(filter_, prediction, still_state_, in.t, checks_.dt_nominal(), watch_.depth_sd(), watch_.depth_tolerance(),
                   aligner_.use_mag(), aligner_.field(), counters_);
@@ -184,6 +202,12 @@ RowContext Navigator::row_context() const {
   c.stops = stops_.stops();
   c.azimuth_reference = aligner_.azimuth_reference();
   c.field_warning = stops_.field_warning();
+  c.motion_warning = unseen_.row_warning();
+  if (aligner_.use_mag() && aligner_.field().dip) {
+    // Magnetic north lies at the declination in a true frame, at 0 in a magnetic one.
+    const double dip = *aligner_.field().dip, d = config_.declination.value_or(0.0);
+    c.field_direction_n = Eigen::Vector3d(std::cos(dip) * std::cos(d), std::cos(dip) * std::sin(d), std::sin(dip));
+  }
   return c;
 }
 

@@ -33,7 +33,8 @@ void OutputRows::add_reading(const InputReading& in) {
   row_stats_.add(in.f, in.w, in.b, in.t);
 }
 
-void OutputRows::fill_attitude(Estimate& e, const NavState& x, const StateMatrix& p, const RowContext& context) const {
+std::string OutputRows::fill_attitude(Estimate& e, const NavState& x, const StateMatrix& p,
+                                      const RowContext& context) const {
   const Eigen::Matrix3d c_bn = x.q.toRotationMatrix();
   const AttitudeWithSigma a =
       attitude_with_sigma(c_bn, p.block<3, 3>(kAtt, kAtt), std::sin(kMinInclinationForToolfaceDeg * kDeg));
@@ -59,9 +60,30 @@ void OutputRows::fill_attitude(Estimate& e, const NavState& x, const StateMatrix
   nav.zero_velocity_updates = context.stops;
   nav.azimuth_reference = context.azimuth_reference;
   e.navigation = nav;
+  return toolface_from_north(e, c_bn, p.block<3, 3>(kAtt, kAtt), a.inclination, context);
 }
 
-Estimate OutputRows::row(double t, const RowContext& context) const {
+// The magnetic toolface from the navigator's attitude and the reference field (the last reading's
+// when the magnetometer does not serve azimuth), and near vertical what to steer by: the toolface
+// from north, magnetic or (without a magnetometer) gyro, with its sigma.
+std::string OutputRows::toolface_from_north(Estimate& e, const Eigen::Matrix3d& c_bn, const Eigen::Matrix3d& p_att,
+                                            double inclination, const RowContext& context) const {
+  const double min_sin = std::sin(kMinInclinationForToolfaceDeg * kDeg);
+  const ReferenceToolface m =
+      reference_toolface(c_bn, p_att, context.field_direction_n.value_or(Eigen::Vector3d::UnitX()), min_sin);
+  if (context.field_direction_n && m.valid) e.magnetic_toolface_deg = m.toolface * kRadToDeg;
+  if (!(inclination < config_.toolface_switch) || !m.valid) return {};
+  const double sd_deg = std::hypot(m.sd * kRadToDeg, std::abs(e.rpm) * 6.0 * config_.time_tag_sd);
+  if (context.field_direction_n) {
+    return format("near vertical (I %.1f deg): steer by the magnetic toolface magnetic_toolface_deg (sigma %.2f deg)",
+                  inclination * kRadToDeg, sd_deg);
+  }
+  return format("near vertical (I %.1f deg): steer by the gyro toolface from north %.2f deg (sigma %.2f deg)",
+                inclination * kRadToDeg, m.toolface * kRadToDeg, sd_deg);
+}
+
+Estimate OutputRows::row(double t, const RowContext& context, std::size_t& note_at) const {
+  note_at = std::string::npos;
   Estimate e;
   e.estimator = "strapdown";
   e.t_start = last_row_t_;
@@ -81,12 +103,18 @@ Estimate OutputRows::row(double t, const RowContext& context) const {
   }
   if (last_b_valid_) e.magnetic_toolface_deg = wrap_deg_360(std::atan2(-last_b_.y(), last_b_.x()) * kRadToDeg);
   if (context.aligned && context.why.empty()) {
-    fill_attitude(e, context.filter->state(), context.filter->covariance(), context);
+    const std::string note = fill_attitude(e, context.filter->state(), context.filter->covariance(), context);
     std::string warning;
     if (t >= gap_warning_from_ && t <= gap_warning_until_) warning = "time gap bridged by prediction only";
     if (!context.field_warning.empty()) warning += (warning.empty() ? "" : "; ") + context.field_warning;
+    if (!context.motion_warning.empty()) warning += (warning.empty() ? "" : "; ") + context.motion_warning;
     if (context.azimuth_reference == "relative" && !config_.initial_azimuth && !config_.gyrocompass) {
       warning += std::string(warning.empty() ? "" : "; ") + "no magnetometer and no initial_azimuth_deg: azimuth relative to the alignment heading";
+    }
+    if (!note.empty()) {
+      if (!warning.empty()) warning += "; ";
+      note_at = warning.size();
+      warning += note;
     }
     e.reason = warning;
   } else {
@@ -118,7 +146,8 @@ bool OutputRows::due(double t) {
 
 void OutputRows::emit(double t, const RowContext& context, Counters& counters, std::vector<Estimate>& out) {
   const double period = 1.0 / config_.output_rate_hz;
-  Estimate e = row(t, context);
+  std::size_t note_at = std::string::npos;
+  Estimate e = row(t, context, note_at);
   count(counters, "rows");
   if (!e.valid) count(counters, "invalid_rows");
   next_output_t_ += period;
@@ -126,7 +155,7 @@ void OutputRows::emit(double t, const RowContext& context, Counters& counters, s
   last_row_t_ = t;
   row_stats_.clear();
   if (config_.smooth) {
-    PendingRow pr{std::move(e), std::nullopt};
+    PendingRow pr{std::move(e), std::nullopt, note_at};
     if (context.aligned && pr.row.valid && smoother_.size() > 0) pr.epoch = smoother_.size() - 1;
     pending_.push_back(std::move(pr));
   } else {
@@ -135,12 +164,14 @@ void OutputRows::emit(double t, const RowContext& context, Counters& counters, s
 }
 
 void OutputRows::store_epoch(const FilterState& filter, const FilterState::Prediction& prediction) {
-  smoother_.store(prediction.phi, prediction.dt, prediction.noise, prediction.velocity_noise, filter.correction(),
+  smoother_.store(prediction.phi, prediction.dt, prediction.noise, prediction.velocity_noise,
+                  prediction.displacement_noise, filter.correction(),
                   filter.state(), filter.gyro_bias(), filter.accel_bias(), filter.covariance());
 }
 
 void OutputRows::store_alignment(const FilterState& filter) {
-  smoother_.store(StateMatrix::Identity(), 0.0, ProcessNoise{}, Eigen::Matrix3d::Zero(), filter.correction(),
+  smoother_.store(StateMatrix::Identity(), 0.0, ProcessNoise{}, Eigen::Matrix3d::Zero(), Eigen::Vector4d::Zero(),
+                  filter.correction(),
                   filter.state(), filter.gyro_bias(), filter.accel_bias(), filter.covariance());
 }
 
@@ -158,10 +189,18 @@ void OutputRows::flush_smoothed(const RowContext& context, std::vector<Estimate>
       const std::string reason = pr.row.reason;
       const bool still = pr.row.navigation ? pr.row.navigation->still : false;
       const std::uint32_t zupts = pr.row.navigation ? pr.row.navigation->zero_velocity_updates : 0;
-      fill_attitude(pr.row, smoothed[*pr.epoch]->state, smoothed[*pr.epoch]->p, context);
+      const std::string note = fill_attitude(pr.row, smoothed[*pr.epoch]->state, smoothed[*pr.epoch]->p, context);
       pr.row.navigation->still = still;
       pr.row.navigation->zero_velocity_updates = zupts;
-      pr.row.reason = reason;
+      // The forward row's warnings, with the near-vertical note of the smoothed attitude.
+      std::string warnings = reason.substr(0, std::min(pr.toolface_note_at, reason.size()));
+      if (!note.empty()) {
+        if (!warnings.empty() && pr.toolface_note_at == std::string::npos) warnings += "; ";
+        warnings += note;
+      } else if (pr.toolface_note_at != std::string::npos && warnings.size() >= 2) {
+        warnings.resize(warnings.size() - 2);  // the "; " before the note that went
+      }
+      pr.row.reason = warnings;
     }
     out.push_back(std::move(pr.row));
   }

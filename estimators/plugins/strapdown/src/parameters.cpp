@@ -125,6 +125,7 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"stop_settle_s", "2", "without depth, a drilling string that slows over seconds looks still before it is: for this long after a stop is confirmed its velocity is zero only within rop_sd_mps, and a stop that ends sooner was none (s; 0: every stop at once)"},
       {"rop_sd_mps", "0.02", "rate of penetration, 1 sigma (m/s): a still period's end is seen late when the string speeds up slowly, and the tool may already move at this speed"},
       {"axial_accel_sd_mps2", "0.02", "without depth, how fast the rate of penetration changes: the string's acceleration along the tool axis over a second, 1 sigma (m/s^2); while the tool moves the navigator holds its own along-axis acceleration to it, which keeps its speed and the tilt from drifting together (0: not)"},
+      {"max_rop_m_per_h", "180", "without depth or a pipe tally, the fastest the string is drilled (m/h): a slide that starts smoothly and runs straight looks still, so through every stop the position's sigma grows at this speed and the attitude's allows for the speed-up it may hide (0: not allowed for)"},
       {"depth_sd_m", "", "measured depth noise, 1 sigma (m); empty: 0.01 or what the depth reports show before alignment, whichever is larger"},
       {"depth_interval_s", "1", "seconds between measured-depth updates"},
       {"pipe_joint_m", "", "no depth sensor: every stop after the alignment is a connection that ran in one joint of this length (m)"},
@@ -134,6 +135,7 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"lever_arm_sd_m", "0.01", "how far the accelerometers may sit off the tool axis, 1 sigma (m): turning, they feel its centripetal acceleration; 0: not modelled"},
       {"imu_samples", "instant", "what a reading is: instant (the value at its time stamp) or mean (the mean over its interval, stamped at the middle, as integrating sensors and decimating converters report)"},
       {"time_tag_sd_s", "0.0005", "how well a reading's time stamp gives the instant it stands for, 1 sigma (s): the toolface of a turning tool is uncertain by its rate times this"},
+      {"toolface_switch_deg", "5", "below this inclination the rows name the toolface from north as the one to steer by, with its sigma: the magnetic toolface (magnetic_toolface_deg, from the navigator's attitude and the reference field) or, without a magnetometer, the gyro toolface; the gravity toolface and the azimuth are weakly defined there (deg; 0: never)"},
       {"smooth", "0", "offline backward (RTS) smoother: push() emits nothing, flush() emits every row smoothed"},
       {"max_gap_s", "1", "a time step longer than this is a gap: reported, bridged by prediction only (s)"},
       {"gyro_time_offset_s", "0", "gyro readings were measured this long after their time stamp (s)"},
@@ -228,6 +230,7 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   c.stop_settle_s = r.number("stop_settle_s", 0, 600);
   c.rop_sd = r.number("rop_sd_mps", 0, 10);
   c.axial_accel_sd = r.number("axial_accel_sd_mps2", 0, 100);
+  c.max_rop = r.number("max_rop_m_per_h", 0, 3600) / 3600.0;
   const std::optional<double> depth_sd = optional_number(r, given, "depth_sd_m", 1e-9, 100);
   c.depth_sd = depth_sd.value_or(0.01);
   c.depth_noise_stated = depth_sd.has_value();
@@ -241,6 +244,7 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   }
   c.samples_are_means = sample_kind == "mean";
   c.time_tag_sd = r.number("time_tag_sd_s", 0, 1);
+  c.toolface_switch = r.number("toolface_switch_deg", 0, 90) * kDegToRad;
   c.smooth = r.boolean("smooth");
   c.max_gap_s = r.number("max_gap_s", 1e-6, 1e6);
   c.gyro_time_offset_s = r.number("gyro_time_offset_s", -1, 1);

@@ -3,7 +3,8 @@
 namespace plumb::strapdown {
 
 void RtsSmoother::store(const StateMatrix& phi, double dt, const ProcessNoise& noise,
-                        const Eigen::Matrix3d& velocity_noise, const StateVector& correction, const NavState& state,
+                        const Eigen::Matrix3d& velocity_noise, const Eigen::Vector4d& displacement_noise,
+                        const StateVector& correction, const NavState& state,
                         const Eigen::Vector3d& gyro_bias, const Eigen::Vector3d& accel_bias, const StateMatrix& p) {
   Epoch e;
   e.dt = dt;
@@ -11,6 +12,7 @@ void RtsSmoother::store(const StateMatrix& phi, double dt, const ProcessNoise& n
   for (int r = 0, j = 0; r < 3; ++r) {
     for (int c = r; c < 3; ++c) e.velocity_noise[j++] = velocity_noise(r, c);
   }
+  Eigen::Map<Eigen::Vector4d>(e.displacement_noise) = displacement_noise;
   std::size_t i = 0;
   for (int r = 0; r < kStates; ++r) {
     for (int c = r; c < kStates; ++c) e.p_upper[i++] = p(r, c);
@@ -42,13 +44,11 @@ StateMatrix RtsSmoother::covariance(const Epoch& e) const {
 
 StateMatrix RtsSmoother::predicted(const Epoch& next, const StateMatrix& phi, const StateMatrix& pk) {
   StateMatrix pred = ErrorStateFilter::predicted_covariance(phi, pk, next.dt, next.noise);
+  Eigen::Matrix3d velocity;
   for (int r = 0, j = 0; r < 3; ++r) {
-    for (int c = r; c < 3; ++c) {
-      pred(index::kVel + r, index::kVel + c) += next.velocity_noise[j];
-      if (c != r) pred(index::kVel + c, index::kVel + r) += next.velocity_noise[j];
-      ++j;
-    }
+    for (int c = r; c < 3; ++c, ++j) velocity(r, c) = velocity(c, r) = next.velocity_noise[j];
   }
+  add_noise(pred, velocity, Eigen::Map<const Eigen::Vector4d>(next.displacement_noise));
   return pred;
 }
 

@@ -15,8 +15,6 @@ using namespace index;
 
 namespace {
 
-// A rig reports depth about once a second: a held value is at most this old while the tool moves.
-constexpr double kHeldDepthAge = 2.0;
 // Seconds of motion the lateral velocity's measured excess remembers.
 constexpr double kLateralMemoryS = 10;
 // A drilling tool's lateral velocity, 1 sigma, is at most this (m/s): vibration of a few millimetres
@@ -148,7 +146,7 @@ void StopUpdates::at_epoch(FilterState& filter, const FilterState::Prediction& p
   velocity_after_updates_ = filter.state().v;
 }
 
-bool StopUpdates::depth_reporting(double t) const { return latest_depth_ && t - last_depth_row_t_ <= kHeldDepthAge; }
+bool StopUpdates::depth_reporting(double t) const { return latest_depth_ && t - last_depth_row_t_ <= kHeldDepthAgeS; }
 
 void StopUpdates::depth_update(FilterState& filter, double t, double dt_nominal, double depth_sd,
                                Counters& counters) {
@@ -158,10 +156,10 @@ void StopUpdates::depth_update(FilterState& filter, double t, double dt_nominal,
     return;
   // A report's age: the time since the last row that carried depth (depth only at connections,
   // or left empty between reports), plus how long a held value had stood then (a 1 Hz report held
-  // on every row; at most kHeldDepthAge). A moving tool has gone on by its speed times that age,
+  // on every row; at most kHeldDepthAgeS). A moving tool has gone on by its speed times that age,
   // which the update's sigma says.
   const NavState& x = filter.state();
-  const double held = std::min(last_depth_row_t_ - latest_depth_t_, kHeldDepthAge);
+  const double held = std::min(last_depth_row_t_ - latest_depth_t_, kHeldDepthAgeS);
   const double speed = x.q.toRotationMatrix().col(2).dot(x.v);
   const double stale_m = speed * (t - last_depth_row_t_ + held);
   filter.update(along_hole_distance(x, *latest_depth_ - depth0_, std::sqrt(depth_sd * depth_sd + stale_m * stale_m)));

@@ -159,6 +159,10 @@ class ErrorStateFilter {
   StateMatrix p_ = StateMatrix::Identity();
 };
 
+// Process noise beyond the figures' added to a covariance: velocity (3 x 3), and u u' over the
+// position and the along-hole distance (u = displacement: a way the tool may have gone unseen).
+void add_noise(StateMatrix& p, const Eigen::Matrix3d& velocity, const Eigen::Vector4d& displacement);
+
 // Applies an error estimate to the whole-value state (and the bias estimates).
 void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bias, Eigen::Vector3d& accel_bias,
                Eigen::Vector2d* lever = nullptr, Eigen::Vector3d* gyro_spin = nullptr, double* mag_axial = nullptr,

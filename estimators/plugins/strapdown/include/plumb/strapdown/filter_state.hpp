@@ -13,6 +13,7 @@
 #include "plumb/strapdown/mechanization.hpp"
 #include "plumb/strapdown/navigator_common.hpp"
 #include "plumb/strapdown/navigator_config.hpp"
+#include "plumb/strapdown/unseen_motion.hpp"
 
 namespace plumb::strapdown {
 
@@ -44,10 +45,13 @@ class FilterState {
     StateMatrix phi;
     double dt = 0;
     ProcessNoise noise;  // the process noise the prediction used
-    // Added to the velocity block beyond that noise: the unresolved vibration of a turning tool.
+    // Added to the velocity block beyond that noise: the unresolved vibration of a turning tool and
+    // the speed a stop may hide (unseen_motion.hpp).
     Eigen::Matrix3d velocity_noise = Eigen::Matrix3d::Zero();
+    // u u' added to the block of the position and the along-hole distance: the way a stop may hide.
+    Eigen::Vector4d displacement_noise = Eigen::Vector4d::Zero();
   };
-  Prediction predict(const ProcessNoise& noise);
+  Prediction predict(const ProcessNoise& noise, const UnseenMotionNoise& unseen = {});
   // The minor steps go on from the (corrected) state.
   void begin_steps();
   template <int M>

@@ -28,6 +28,7 @@
 #include "plumb/strapdown/stillness_lag.hpp"
 #include "plumb/strapdown/stillness_watch.hpp"
 #include "plumb/strapdown/stop_updates.hpp"
+#include "plumb/strapdown/unseen_motion.hpp"
 
 namespace plumb::strapdown {
 
@@ -48,7 +49,7 @@ class Navigator {
   const std::map<std::string, std::uint64_t>& counters() const { return counters_; }
   // What the navigator has to say once (a run that cannot align and why, the noise it measured):
   // returns and forgets the messages since the last call.
-  std::vector<std::string> take_notices() { return watch_.take_notices(); }
+  std::vector<std::string> take_notices();
 
   // Introspection for tests.
   bool aligned() const { return aligned_; }
@@ -92,6 +93,7 @@ class Navigator {
   StopUpdates stops_;
   OutputRows rows_;
   StillnessLag lag_;
+  UnseenMotion unseen_;
 };
 
 }  // namespace plumb::strapdown

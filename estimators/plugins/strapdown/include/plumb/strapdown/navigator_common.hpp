@@ -42,6 +42,9 @@ inline constexpr double kMinSigmaGyro = 1e-6;     // rad/s per sample
 inline constexpr double kMinMeanSdGyro = 1e-9;    // rad/s, a zero-rate update's mean
 inline constexpr double kMinMeanSdAccel = 1e-6;   // m/s^2, a tilt update's mean
 
+// A rig reports depth about once a second: a held value is at most this old while the tool moves (s).
+inline constexpr double kHeldDepthAgeS = 2.0;
+
 // printf-style text of up to three numbers, for notices, warnings and reasons.
 std::string format(const char* fmt, double a, double b = 0, double c = 0);
 

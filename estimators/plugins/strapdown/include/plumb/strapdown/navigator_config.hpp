@@ -73,6 +73,9 @@ struct NavigatorConfig {
   // second, 1 sigma (m/s^2). Without depth the navigator holds its own along-axis acceleration to it
   // while the tool moves (0: not).
   double axial_accel_sd = 0.02;
+  // The fastest the string is drilled (m/s): without depth or a tally, a stop may be a slide this
+  // fast that the sensors cannot see (unseen_motion.hpp). 0: not allowed for.
+  double max_rop = 0.05;
   double depth_sd = 0.01;              // m
   double depth_interval_s = 1;
   // No depth sensor: a pipe tally. Joint i is run in after stop i (the alignment's stop is stop 0),
@@ -104,6 +107,9 @@ struct NavigatorConfig {
   // delay), 1 sigma (s): the toolface of a tool turning at w is uncertain by w times this.
   double time_tag_sd = 0.5e-3;
   // Output and offline.
+  // Below this inclination the rows name the toolface from north (magnetic, or gyro without a
+  // magnetometer) as the one to steer by, with its sigma (rad; 0: never).
+  double toolface_switch = 5.0 * 3.14159265358979323846 / 180.0;
   bool smooth = false;
   double max_gap_s = 1.0;
   double gyro_time_offset_s = 0;       // gyro stamps lag the true gyro time by this (s)

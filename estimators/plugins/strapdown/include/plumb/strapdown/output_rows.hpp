@@ -33,6 +33,10 @@ struct RowContext {
   std::uint32_t stops = 0;              // still periods with zero-velocity updates so far
   std::string azimuth_reference;
   std::string field_warning;            // why the last stop gave no azimuth update
+  std::string motion_warning;           // the along-hole motion is not measured (unseen_motion.hpp)
+  // The reference field's direction in the navigation frame, when the magnetometer serves azimuth:
+  // the magnetic toolface comes from it (else the gyro toolface, from north).
+  std::optional<Eigen::Vector3d> field_direction_n;
 };
 
 class OutputRows {
@@ -71,8 +75,12 @@ class OutputRows {
   void flush_smoothed(const RowContext& context, std::vector<Estimate>& out);
 
  private:
-  Estimate row(double t, const RowContext& context) const;
-  void fill_attitude(Estimate& e, const NavState& x, const StateMatrix& p, const RowContext& context) const;
+  // note_at: where the reason's near-vertical toolface note begins (npos: none).
+  Estimate row(double t, const RowContext& context, std::size_t& note_at) const;
+  // Returns what a row near vertical says of its toolface (empty above toolface_switch).
+  std::string fill_attitude(Estimate& e, const NavState& x, const StateMatrix& p, const RowContext& context) const;
+  std::string toolface_from_north(Estimate& e, const Eigen::Matrix3d& c_bn, const Eigen::Matrix3d& p_att,
+                                  double inclination, const RowContext& context) const;
 
   NavigatorConfig config_;
   double next_output_t_ = 0;
@@ -86,7 +94,9 @@ class OutputRows {
   struct PendingRow {
     Estimate row;
     std::optional<std::size_t> epoch;  // smoother epoch of the row (none before alignment)
+    std::size_t toolface_note_at = std::string::npos;  // where the reason's near-vertical note begins
   };
+
   std::vector<PendingRow> pending_;
 };
 

@@ -8,7 +8,7 @@
 //   dx(k|N) = G (dx(k+1|N) + c(k+1)),  P(k|N) = P(k|k) + G (P(k|N+1) - P(k+1|k)) G',
 // where dx(k|N) is the smoothed error of the stored (post-feedback) state and c(k+1) the
 // correction applied at k+1 (the stored state at k+1 is the prediction minus c(k+1)).
-// Memory: about 8 kB per epoch (P upper triangle 325, Phi 625, state 19, correction 25, noise 11
+// Memory: about 8 kB per epoch (P upper triangle 325, Phi 625, state 19, correction 25, noise 15
 // doubles), independent of the sample rate: a 1-hour run at the default 20 Hz filter rate keeps
 // 72,000 epochs, 580 MB; at 5 Hz, 145 MB (parameter kf_rate_hz).
 #pragma once
@@ -38,7 +38,7 @@ class RtsSmoother {
   // Epoch k: phi, dt and process noise of the prediction from epoch k-1 (ignored for the first),
   // the correction applied at k, the state and covariance after it.
   void store(const StateMatrix& phi, double dt, const ProcessNoise& noise, const Eigen::Matrix3d& velocity_noise,
-             const StateVector& correction, const NavState& state, const Eigen::Vector3d& gyro_bias,
+             const Eigen::Vector4d& displacement_noise, const StateVector& correction, const NavState& state, const Eigen::Vector3d& gyro_bias,
              const Eigen::Vector3d& accel_bias, const StateMatrix& p);
   // Runs the backward pass; calls visit(k, smoothed) from the last epoch to the first.
   template <class Visit>
@@ -50,6 +50,7 @@ class RtsSmoother {
     double dt = 0;
     ProcessNoise noise;
     double velocity_noise[6];  // upper triangle
+    double displacement_noise[4];
     double p_upper[kStates * (kStates + 1) / 2];
     double phi[kStates * kStates];
     double correction[kStates];
