@@ -29,7 +29,7 @@ std::vector<Sample> without_depth(std::vector<Sample> samples) {
   return samples;
 }
 
-std::vector<Estimate> navigate(const std::vector<Sample>& samples, const estimator::Parameters& params,
+std::vector<Estimate> navigate_unseen(const std::vector<Sample>& samples, const estimator::Parameters& params,
                                std::vector<std::string>* notices = nullptr) {
   Navigator nav(parse_parameters(params));
   std::vector<Estimate> rows;
@@ -78,7 +78,7 @@ TEST(StrapdownUnseenMotion, RowsAndNoticeNameThePipeTally) {
   const auto scenario = straight_slides("tactical", 1, 15);
   const auto [samples, truth] = simulate(scenario);
   std::vector<std::string> notices;
-  const std::vector<Estimate> rows = navigate(without_depth(samples), parameters_for(scenario), &notices);
+  const std::vector<Estimate> rows = navigate_unseen(without_depth(samples), parameters_for(scenario), &notices);
   ASSERT_FALSE(rows.empty());
   EXPECT_NE(rows.back().reason.find("pipe_joint_m or pipe_tally_m"), std::string::npos) << rows.back().reason;
   int said = 0;
@@ -95,7 +95,7 @@ TEST(StrapdownUnseenMotion, NothingChangesWithDepthOrATally) {
   for (const auto& [input, params] : {std::pair{samples, parameters_for(scenario)}, std::pair{without_depth(samples), with_tally}}) {
     estimator::Parameters off = params;
     off["max_rop_m_per_h"] = "0";
-    const std::vector<Estimate> a = navigate(input, params), b = navigate(input, off);
+    const std::vector<Estimate> a = navigate_unseen(input, params), b = navigate_unseen(input, off);
     ASSERT_EQ(a.size(), b.size());
     for (std::size_t k = 0; k < a.size(); ++k) {
       ASSERT_EQ(a[k].valid, b[k].valid) << k;
