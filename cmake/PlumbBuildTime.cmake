@@ -10,10 +10,11 @@ option(PLUMB_UNITY_BUILD "Compile each target's sources in batches (unity build)
 set(CMAKE_UNITY_BUILD ${PLUMB_UNITY_BUILD})
 set(CMAKE_UNITY_BUILD_BATCH_SIZE 16)
 
-# The code on the paths that docs/benchmarks.md times (the estimators, the bridge's parser, the
-# recorder, the transports and their generated types) is compiled file by file as it always was:
-# a batch lets the optimizer inline across files and changes the machine code; these stay as
-# measured. Their compile work is a fifth of the build's.
+# The code on the paths that docs/benchmarks.md times by its own arithmetic (the estimators, the
+# bridge's parser, the recorder) is compiled file by file as it always was: a batch lets the
+# optimizer inline across files and changes the machine code; these stay as measured. The
+# transports and their generated types are batched: their time is the DDS libraries' (the
+# transport benchmark's latency is the same either way, docs/contributing.md).
 # A sanitizer build is never timed: it batches these too.
 function(plumb_compile_file_by_file target)
   if(NOT PLUMB_SANITIZE)

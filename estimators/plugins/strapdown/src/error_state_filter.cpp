@@ -237,4 +237,70 @@ void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bia
   if (gyro_g != nullptr) *gyro_g -= dx.segment<2>(kGyroG);
 }
 
+template <int M>
+int ErrorStateFilter::touched_states(const Eigen::Matrix<double, M, kStates>& h, std::array<int, kStates>& touched) {
+  int n = 0;
+  for (int j = 0; j < kStates; ++j)
+    if (!h.col(j).isZero(0.0)) touched[n++] = j;
+  return n;
+}
+
+template <int M>
+Eigen::Matrix<double, kStates, M> ErrorStateFilter::p_ht(const Eigen::Matrix<double, M, kStates>& h) const {
+  std::array<int, kStates> touched{};
+  const int n_touched = touched_states(h, touched);
+  Eigen::Matrix<double, kStates, M> pht = Eigen::Matrix<double, kStates, M>::Zero();
+  for (int t = 0; t < n_touched; ++t) pht.noalias() += p_.col(touched[t]) * h.col(touched[t]).transpose();
+  return pht;
+}
+
+template <int M>
+StateVector ErrorStateFilter::update(const Eigen::Matrix<double, M, 1>& r, const Eigen::Matrix<double, M, kStates>& h,
+                                   const Eigen::Matrix<double, M, M>& noise, double* nis) {
+  return update(r, h, noise, p_ht(h), nis);
+}
+template <int M>
+StateVector ErrorStateFilter::update(const Eigen::Matrix<double, M, 1>& r, const Eigen::Matrix<double, M, kStates>& h,
+                                   const Eigen::Matrix<double, M, M>& noise,
+                                   const Eigen::Matrix<double, kStates, M>& pht, double* nis) {
+  // H P H' over H's non-zero columns only, as P H'.
+  std::array<int, kStates> touched{};
+  const int n_touched = touched_states(h, touched);
+  Eigen::Matrix<double, M, M> s = noise;
+  for (int t = 0; t < n_touched; ++t) s.noalias() += h.col(touched[t]) * pht.row(touched[t]);
+  // M <= 3: the closed-form inverse of a small symmetric positive definite matrix.
+  const Eigen::Matrix<double, M, M> s_inv = s.inverse();
+  const Eigen::Matrix<double, kStates, M> k = pht.lazyProduct(s_inv);
+  if (nis != nullptr) *nis = r.dot(s_inv * r);
+  // Joseph form (I-KH) P (I-KH)' + K R K', multiplied out: P - K(HP) - (K(HP))' + K S K' (the
+  // same matrix for any gain K), at 25 x 25 x M products instead of 25 x 25 x 25 ones. With
+  // W = K S / 2 - P H' the change is K W' + W K': symmetric, so one triangle is computed and
+  // mirrored (P stays exactly symmetric).
+  const Eigen::Matrix<double, kStates, M> w = 0.5 * k.lazyProduct(s) - pht;
+  for (int j = 0; j < kStates; ++j) {
+    for (int i = 0; i <= j; ++i) {
+      double d = 0;
+      for (int m = 0; m < M; ++m) d += k(i, m) * w(j, m) + w(i, m) * k(j, m);
+      p_(i, j) += d;
+      p_(j, i) = p_(i, j);
+    }
+  }
+  return k * r;
+}
+
+// The measurement sizes the navigator uses (error_state_filter.hpp).
+#define PLUMB_ERROR_STATE_FILTER_UPDATES(M)                                                                   \
+  template Eigen::Matrix<double, kStates, M> ErrorStateFilter::p_ht<M>(const Eigen::Matrix<double, M, kStates>&) \
+      const;                                                                                                  \
+  template StateVector ErrorStateFilter::update<M>(const Eigen::Matrix<double, M, 1>&,                        \
+                                                   const Eigen::Matrix<double, M, kStates>&,                  \
+                                                   const Eigen::Matrix<double, M, M>&, double*);              \
+  template StateVector ErrorStateFilter::update<M>(                                                           \
+      const Eigen::Matrix<double, M, 1>&, const Eigen::Matrix<double, M, kStates>&,                           \
+      const Eigen::Matrix<double, M, M>&, const Eigen::Matrix<double, kStates, M>&, double*);
+PLUMB_ERROR_STATE_FILTER_UPDATES(1)
+PLUMB_ERROR_STATE_FILTER_UPDATES(2)
+PLUMB_ERROR_STATE_FILTER_UPDATES(3)
+#undef PLUMB_ERROR_STATE_FILTER_UPDATES
+
 }  // namespace plumb::strapdown

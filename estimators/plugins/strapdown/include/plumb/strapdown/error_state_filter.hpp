@@ -96,51 +96,21 @@ class ErrorStateFilter {
   // attitude and velocity): a sum over H's non-zero columns only (the terms left out are exact
   // zeros).
   template <int M>
-  Eigen::Matrix<double, kStates, M> p_ht(const Eigen::Matrix<double, M, kStates>& h) const {
-    std::array<int, kStates> touched{};
-    const int n_touched = touched_states(h, touched);
-    Eigen::Matrix<double, kStates, M> pht = Eigen::Matrix<double, kStates, M>::Zero();
-    for (int t = 0; t < n_touched; ++t) pht.noalias() += p_.col(touched[t]) * h.col(touched[t]).transpose();
-    return pht;
-  }
+  Eigen::Matrix<double, kStates, M> p_ht(const Eigen::Matrix<double, M, kStates>& h) const;
 
   // One measurement: Joseph-form update, P kept symmetric. Returns the error estimate (to feed
   // back); `nis` (if given) receives the normalised innovation squared r' S^-1 r.
+  // Defined in error_state_filter.cpp for M = 1, 2, 3: the 25-state products are compiled once,
+  // not in every file that updates the filter (the work of a call is far above a call's cost).
   template <int M>
   StateVector update(const Eigen::Matrix<double, M, 1>& r, const Eigen::Matrix<double, M, kStates>& h,
-                     const Eigen::Matrix<double, M, M>& noise, double* nis = nullptr) {
-    return update(r, h, noise, p_ht(h), nis);
-  }
+                     const Eigen::Matrix<double, M, M>& noise, double* nis = nullptr);
   // The same with P H' as p_ht() gave it (for a caller that tested the innovation against it first;
   // P has not changed since).
   template <int M>
   StateVector update(const Eigen::Matrix<double, M, 1>& r, const Eigen::Matrix<double, M, kStates>& h,
                      const Eigen::Matrix<double, M, M>& noise, const Eigen::Matrix<double, kStates, M>& pht,
-                     double* nis = nullptr) {
-    // H P H' over H's non-zero columns only, as P H'.
-    std::array<int, kStates> touched{};
-    const int n_touched = touched_states(h, touched);
-    Eigen::Matrix<double, M, M> s = noise;
-    for (int t = 0; t < n_touched; ++t) s.noalias() += h.col(touched[t]) * pht.row(touched[t]);
-    // M <= 3: the closed-form inverse of a small symmetric positive definite matrix.
-    const Eigen::Matrix<double, M, M> s_inv = s.inverse();
-    const Eigen::Matrix<double, kStates, M> k = pht.lazyProduct(s_inv);
-    if (nis != nullptr) *nis = r.dot(s_inv * r);
-    // Joseph form (I-KH) P (I-KH)' + K R K', multiplied out: P - K(HP) - (K(HP))' + K S K' (the
-    // same matrix for any gain K), at 25 x 25 x M products instead of 25 x 25 x 25 ones. With
-    // W = K S / 2 - P H' the change is K W' + W K': symmetric, so one triangle is computed and
-    // mirrored (P stays exactly symmetric).
-    const Eigen::Matrix<double, kStates, M> w = 0.5 * k.lazyProduct(s) - pht;
-    for (int j = 0; j < kStates; ++j) {
-      for (int i = 0; i <= j; ++i) {
-        double d = 0;
-        for (int m = 0; m < M; ++m) d += k(i, m) * w(j, m) + w(i, m) * k(j, m);
-        p_(i, j) += d;
-        p_(j, i) = p_(i, j);
-      }
-    }
-    return k * r;
-  }
+                     double* nis = nullptr);
 
   // After feeding dx back into the whole-value state the error state is zero again; its
   // covariance is unchanged to first order (the attitude reset Jacobian is I - [dphi x]/2 ~ I).
@@ -149,12 +119,7 @@ class ErrorStateFilter {
  private:
   // The states whose columns of h are not zero, in increasing order; returns how many.
   template <int M>
-  static int touched_states(const Eigen::Matrix<double, M, kStates>& h, std::array<int, kStates>& touched) {
-    int n = 0;
-    for (int j = 0; j < kStates; ++j)
-      if (!h.col(j).isZero(0.0)) touched[n++] = j;
-    return n;
-  }
+  static int touched_states(const Eigen::Matrix<double, M, kStates>& h, std::array<int, kStates>& touched);
 
   StateMatrix p_ = StateMatrix::Identity();
 };
