@@ -7,6 +7,7 @@
 
 #include "plumb/core/attitude.hpp"
 #include "plumb/sim/platform.hpp"
+#include "cross_matrix.hpp"
 
 namespace plumb::sim {
 namespace {
@@ -76,12 +77,6 @@ TEST(PlatformGeometry, VerticalHoleMagneticToolfaceIsAzimuthPlusToolface) {
   }
 }
 
-Eigen::Matrix3d skew(const Eigen::Vector3d& w) {
-  Eigen::Matrix3d m;
-  m << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
-  return m;
-}
-
 TEST(PlatformGeometry, GyroSignMatchesFiniteDifferenceOfAttitude) {
   for (double rpm : {60.0, -45.0}) {
     Scenario sc = noiseless(30.0, 40.0, 0.0, rpm);
@@ -100,7 +95,7 @@ TEST(PlatformGeometry, GyroSignMatchesFiniteDifferenceOfAttitude) {
       const Eigen::Matrix3d dc = (c_next - c_prev) / (2 * dt);
       // Central difference error ~ w^3 dt^2 / 6; a wrong sign would be off by 2w.
       const double tol = 10 * w * w * w * dt * dt;
-      EXPECT_LT((dc + skew(samples[k].w) * c).norm(), tol) << "rpm " << rpm << " k " << k;
+      EXPECT_LT((dc + test::cross_matrix(samples[k].w) * c).norm(), tol) << "rpm " << rpm << " k " << k;
       EXPECT_NEAR(samples[k].w.z(), rpm * 2 * kPi / 60, 1e-12);
     }
   }

@@ -9,15 +9,10 @@
 #include "plumb/core/attitude.hpp"
 #include "plumb/sim/walk.hpp"
 #include "error_free.hpp"
+#include "cross_matrix.hpp"
 
 namespace plumb::sim {
 namespace {
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& w) {
-  Eigen::Matrix3d m;
-  m << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
-  return m;
-}
 
 // dC_n^b/dt = -[w_nb x] C_n^b, so [w_nb x] = -(dC/dt) C^T; central differences of h = 1e-5 s leave
 // h^2/6 |C'''| ~ 1e-10 x (rates up to 7 rad/s)^3 plus round-off 1e-16 / h: below 1e-7 either way.
@@ -31,7 +26,7 @@ TEST(WalkPhysics, RatesAreTheDerivativesOfAttitudeAndPosition) {
       const double t = swing.t0 + frac * (swing.t1 - swing.t0);
       const WalkState st = path.at(t), a = path.at(t - h), b = path.at(t + h);
       const Eigen::Matrix3d w_fd = -(b.c_nb - a.c_nb) / (2 * h) * st.c_nb.transpose();
-      EXPECT_LT((w_fd - skew(st.w_nb)).cwiseAbs().maxCoeff(), 1e-7) << "t " << t;
+      EXPECT_LT((w_fd - test::cross_matrix(st.w_nb)).cwiseAbs().maxCoeff(), 1e-7) << "t " << t;
       EXPECT_LT((st.velocity - (b.position - a.position) / (2 * h)).norm(), 1e-7) << "t " << t;
       EXPECT_LT((st.acceleration - (b.velocity - a.velocity) / (2 * h)).norm(), 1e-6) << "t " << t;
       max_rate = std::max(max_rate, st.w_nb.norm());

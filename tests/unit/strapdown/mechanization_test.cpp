@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include <Eigen/LU>
 #include <gtest/gtest.h>
 
 #include "plumb/strapdown/error_state_filter.hpp"
@@ -11,6 +12,29 @@
 
 namespace plumb::strapdown::test {
 namespace {
+
+// The filter's algebra checked against the textbook products, written in dynamic-size matrices:
+// Eigen's general product is a reference independent of the fixed-size code the filter compiles
+// (and compiles once for every size, where fixed-size 25 x 25 products cost seconds each).
+using Dynamic = Eigen::MatrixXd;
+Dynamic mul(const Dynamic& a, const Dynamic& b) { return a * b; }
+Dynamic transposed(const Dynamic& a) { return a.transpose(); }
+Dynamic textbook_sandwich(const Dynamic& phi, const Dynamic& m) { return mul(mul(phi, m), transposed(phi)); }
+Dynamic textbook_gain(const Dynamic& p, const Dynamic& h, const Dynamic& r) {
+  const Dynamic pht = mul(p, transposed(h));
+  const Dynamic s = mul(h, pht) + r;
+  return mul(pht, s.inverse());
+}
+// (I-KH) P (I-KH)' + K R K'.
+Dynamic textbook_joseph(const Dynamic& p, const Dynamic& h, const Dynamic& r) {
+  const Dynamic k = textbook_gain(p, h, r);
+  const Dynamic ikh = Dynamic::Identity(p.rows(), p.cols()) - mul(k, h);
+  return textbook_sandwich(ikh, p) + textbook_sandwich(k, r);
+}
+StateMatrix random_covariance() {
+  const Dynamic a = Dynamic::Random(kStates, kStates);
+  return mul(a, transposed(a)) + Dynamic::Identity(kStates, kStates);
+}
 
 // A constant rate about a fixed axis with no earth rate: the exact attitude is exp(t [w x]).
 // At 10 Hz and 120 rpm a step turns 1.26 rad; the sub-stepped Runge-Kutta must still be exact to
@@ -149,11 +173,11 @@ TEST(ErrorStateFilterAlgebra, StructuredProductsEqualThePlainOnes) {
   const StateMatrix phi = ErrorStateFilter::transition(step, w_ie);
   // The block-by-block transition (gravity's column included) is the plain second-order series of F dt.
   const StateMatrix fdt = ErrorStateFilter::dynamics(step, w_ie) * step.dt;
-  const StateMatrix series = StateMatrix::Identity() + fdt + 0.5 * fdt * fdt;
+  const Dynamic fdt_d = fdt;
+  const Dynamic series = Dynamic::Identity(kStates, kStates) + fdt_d + 0.5 * mul(fdt_d, fdt_d);
   EXPECT_LT((phi - series).norm(), 1e-14 * series.norm());
-  const StateMatrix a = StateMatrix::Random();
-  const StateMatrix p = a * a.transpose() + StateMatrix::Identity();
-  const StateMatrix plain = phi * p * phi.transpose();
+  const StateMatrix p = random_covariance();
+  const Dynamic plain = textbook_sandwich(phi, p);
   EXPECT_LT((ErrorStateFilter::sandwich(phi, p) - plain).norm(), 1e-12 * plain.norm());
 
   ProcessNoise noise;
@@ -167,17 +191,15 @@ TEST(ErrorStateFilterAlgebra, StructuredProductsEqualThePlainOnes) {
   q.segment<3>(3).setConstant(noise.accel_vrw * noise.accel_vrw * step.dt);
   q.segment<3>(9).setConstant(noise.gyro_bias_walk * noise.gyro_bias_walk * step.dt);
   q.segment<3>(12).setConstant(noise.accel_bias_walk * noise.accel_bias_walk * step.dt);
-  const StateMatrix big_q = q.asDiagonal();
-  const StateMatrix predicted = plain + 0.5 * (phi * big_q * phi.transpose() + big_q);
+  const Dynamic big_q = q.asDiagonal();
+  const Dynamic predicted = plain + 0.5 * (textbook_sandwich(phi, big_q) + big_q);
   EXPECT_LT((ErrorStateFilter::predicted_covariance(phi, p, step.dt, noise) - predicted).norm(), 1e-12 * predicted.norm());
 
   ErrorStateFilter kf;
   kf.reset(p);
   const Eigen::Matrix<double, 3, kStates> h = Eigen::Matrix<double, 3, kStates>::Random();
   const Eigen::Matrix3d r = Eigen::Vector3d(0.1, 0.2, 0.3).asDiagonal();
-  const Eigen::Matrix<double, kStates, 3> k = p * h.transpose() * (h * p * h.transpose() + r).inverse();
-  const StateMatrix ikh = StateMatrix::Identity() - k * h;
-  const StateMatrix joseph = ikh * p * ikh.transpose() + k * r * k.transpose();
+  const Dynamic joseph = textbook_joseph(p, h, r);
   kf.update<3>(Eigen::Vector3d(0.1, -0.2, 0.3), h, r);
   EXPECT_LT((kf.covariance() - joseph).norm(), 1e-10 * joseph.norm());
 }
@@ -186,8 +208,7 @@ TEST(ErrorStateFilterAlgebra, StructuredProductsEqualThePlainOnes) {
 // H's non-zero columns equal the plain products, with every column of phi in use (a turning tool:
 // lever arm, spin and g-sensitivity) and with the lever arm's columns zero (a tool that does not turn).
 TEST(ErrorStateFilterAlgebra, SparsePredictionAndUpdateEqualThePlainOnes) {
-  const StateMatrix a = StateMatrix::Random();
-  const StateMatrix p = a * a.transpose() + StateMatrix::Identity();
+  const StateMatrix p = random_covariance();
   ProcessNoise noise;
   noise.gyro_arw = 1e-4;
   noise.accel_vrw = 2e-3;
@@ -219,22 +240,20 @@ TEST(ErrorStateFilterAlgebra, SparsePredictionAndUpdateEqualThePlainOnes) {
   Eigen::Matrix<double, 2, kStates> h = Eigen::Matrix<double, 2, kStates>::Zero();
   h.block<2, 6>(0, index::kAtt) = Eigen::Matrix<double, 2, 6>::Random();
   const Eigen::Matrix2d r = Eigen::Vector2d(0.1, 0.2).asDiagonal();
-  const Eigen::Matrix<double, kStates, 2> k = p * h.transpose() * (h * p * h.transpose() + r).inverse();
-  const StateMatrix ikh = StateMatrix::Identity() - k * h;
-  const StateMatrix joseph = ikh * p * ikh.transpose() + k * r * k.transpose();
+  const Dynamic k = textbook_gain(p, h, r);
+  const Dynamic joseph = textbook_joseph(p, h, r);
   ErrorStateFilter kf;
   kf.reset(p);
   const Eigen::Vector2d residual(0.1, -0.2);
   const StateVector dx = kf.update<2>(residual, h, r);
   EXPECT_LT((kf.covariance() - joseph).norm(), 1e-12 * joseph.norm());
-  EXPECT_LT((dx - k * residual).norm(), 1e-12 * (k * residual).norm());
+  const Dynamic dx_expected = mul(k, residual);
+  EXPECT_LT((Dynamic(dx) - dx_expected).norm(), 1e-12 * dx_expected.norm());
   EXPECT_EQ(kf.covariance(), kf.covariance().transpose());
   Eigen::Matrix<double, 3, kStates> hv = Eigen::Matrix<double, 3, kStates>::Zero();
   hv.block<3, 3>(0, index::kVel).setIdentity();
   const Eigen::Matrix3d rv = Eigen::Matrix3d::Identity() * 1e-4;
-  const Eigen::Matrix<double, kStates, 3> kv = p * hv.transpose() * (hv * p * hv.transpose() + rv).inverse();
-  const StateMatrix ikhv = StateMatrix::Identity() - kv * hv;
-  const StateMatrix josephv = ikhv * p * ikhv.transpose() + kv * rv * kv.transpose();
+  const Dynamic josephv = textbook_joseph(p, hv, rv);
   kf.reset(p);
   kf.update<3>(Eigen::Vector3d(0.01, 0.02, -0.01), hv, rv);
   EXPECT_LT((kf.covariance() - josephv).norm(), 1e-12 * josephv.norm());
