@@ -175,6 +175,56 @@ TEST(IscwsaToolCode, FileErrorsNameTheLine) {
   EXPECT_THROW(builtin_tool_code("MWD+XYZ"), std::invalid_argument);
 }
 
+// Every built-in term is in its weighting function's model unit (the table the file reader
+// converts to); a file in other units of the same quantities gives the same covariances as the
+// file in the model's units; a unit of another quantity, or none known, names the line and the
+// units accepted.
+TEST(IscwsaToolCode, UnitsAreCheckedAndConverted) {
+  for (const std::string& name : builtin_tool_codes()) {
+    for (const Term& t : builtin_tool_code(name).terms) {
+      const std::string unit = t.unit == "deg/sqr(hr)" ? "deg/sqrt(hr)" : t.unit;
+      EXPECT_EQ(model_unit(t.weight_function), unit) << name << " " << t.code;
+    }
+  }
+  // And the six example models of SPE 90408 as the paper gives them (read through the same table).
+  for (int m = 1; m <= 6; ++m) {
+    const std::string file = std::string(PLUMB_SPE90408_DATA) + "/model_" + std::to_string(m) + ".tool.csv";
+    std::ifstream in(file);
+    EXPECT_NO_THROW(read_tool_code(in, file));
+  }
+  const std::string header = "code,weight_function,magnitude,unit,propagation\n";
+  std::istringstream model_units(header +
+                                 "DRFR,DREF,0.35,m,R\nDSTG,DST,2.5e-07,1/m,G\nABZ,ABZ,0.004,m/s2,S\n"
+                                 "ASZ,ASZ,0.0005,-,S\nMBZ,MBZ,70,nT,S\nSAG,SAG,0.2,deg,S\n");
+  std::istringstream other_units(header +
+                                 "DRFR,DREF,1.148293963254593,ft,R\nDSTG,DST,7.62e-08,1/ft,G\n"
+                                 "ABZ,ABZ,0.4078864851911713,mg,S\nASZ,ASZ,500,ppm,S\nMBZ,MBZ,0.07,uT,S\n"
+                                 "SAG,SAG,0.0034906585039886592,rad,S\n");
+  const ToolCode a = read_tool_code(model_units, "model.csv"), b = read_tool_code(other_units, "other.csv");
+  ASSERT_EQ(a.terms.size(), b.terms.size());
+  for (std::size_t i = 0; i < a.terms.size(); ++i) {
+    EXPECT_NEAR(b.terms[i].magnitude, a.terms[i].magnitude, 1e-9 * a.terms[i].magnitude) << a.terms[i].code;
+    EXPECT_EQ(b.terms[i].unit, a.terms[i].unit);
+  }
+  std::vector<Station> path;
+  for (int k = 0; k <= 20; ++k) path.push_back(Station{100.0 * k, 3.0 * k, 40.0 + k, 40.0 + k});
+  Field field;
+  field.total_b_nT = 50000, field.dip_deg = 65;
+  const Result ra = propagate(path, a, field), rb = propagate(path, b, field);
+  EXPECT_LT((ra.total.back() - rb.total.back()).norm(), 1e-9 * ra.total.back().norm());
+
+  for (const char* row : {"DRFR,DREF,1,furlong,R", "MBZ,MBZ,70,deg,S", "SAG,SAG,0.2,nT,S"}) {
+    std::istringstream bad(header + row + "\n");
+    try {
+      read_tool_code(bad, "units.csv");
+      FAIL() << "accepted " << row;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("units.csv:2: term "), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("accepted: "), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(IscwsaToolCode, RevisionsDifferWhereTheDocumentsDo) {
   const auto find = [](const ToolCode& t, const std::string& code) {
     for (const auto& term : t.terms)

@@ -116,6 +116,12 @@ ToolCode read_tool_code(std::istream& in, const std::string& source) {
     if (!known_weight_function(term.weight_function))
       throw std::runtime_error(where + "unknown weighting function '" + term.weight_function + "'");
     if (term.weight_function == "XCL") term.weight_function = term.code == "XCLH" ? "XCLH" : "XCLA";
+    try {
+      term.magnitude = to_model_unit(term.weight_function, term.magnitude, term.unit);
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(where + "term " + term.code + ": " + e.what());
+    }
+    term.unit = model_unit(term.weight_function);
     t.terms.push_back(term);
   }
   if (t.terms.empty()) throw std::runtime_error(source + ": no terms");

@@ -121,6 +121,15 @@ std::vector<std::string> builtin_tool_codes();
 // The weighting functions this model knows.
 bool known_weight_function(const std::string& name);
 
+// The unit a weighting function's magnitude is given in (Term::unit of the built-in codes): m, 1/m,
+// -, m/s2, nT, deg, deg.nT, deg/hr or deg/sqrt(hr); empty for an unknown weighting function.
+std::string model_unit(const std::string& weight_function);
+// A magnitude given in `unit` in model_unit(weight_function): ft -> m, 1/ft -> 1/m, ppm and % -> -,
+// mg and ug -> m/s2, uT -> nT, rad and mrad -> deg, deg/h -> deg/hr, deg/sqr(hr) (the OWSG codes'
+// spelling) -> deg/sqrt(hr). std::invalid_argument naming the units it accepts for another unit
+// (a unit of another quantity, or one it does not know).
+double to_model_unit(const std::string& weight_function, double magnitude, const std::string& unit);
+
 // Whether the tool code gyrocompasses (its terms need Field::latitude_deg).
 bool needs_latitude(const ToolCode& tool);
 
