@@ -30,28 +30,7 @@ std::set<std::string> known_topic_names(transport::Participant& participant) {
 
 std::vector<std::string> closest_topic_names(transport::Participant& participant, const std::string& topic) {
   const auto names = known_topic_names(participant);
-  if (names.count(topic)) return {};
-  // A typo is a few characters; a third of the name would be another name altogether.
-  const std::size_t limit = std::max<std::size_t>(2, std::min<std::size_t>(4, topic.size() / 3));
-  std::vector<std::pair<std::size_t, std::string>> scored;
-  for (const auto& n : names) {
-    const std::size_t d = edit_distance(topic, n);
-    if (d <= limit) scored.emplace_back(d, n);
-  }
-  std::sort(scored.begin(), scored.end());
-  std::vector<std::string> out;
-  for (const auto& [d, n] : scored) {
-    if (out.size() == 3 || d > scored.front().first) break;
-    out.push_back(n);
-  }
-  return out;
-}
-
-std::string did_you_mean(const std::vector<std::string>& names) {
-  if (names.empty()) return "";
-  std::string text = "did you mean ";
-  for (std::size_t i = 0; i < names.size(); ++i) text += (i == 0 ? "" : (i + 1 == names.size() ? " or " : ", ")) + names[i];
-  return text + "?";
+  return closest_names(topic, std::vector<std::string>(names.begin(), names.end()));
 }
 
 SilenceNotes::SilenceNotes(std::string program, std::string topic, bool unsecured)

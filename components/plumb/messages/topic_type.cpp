@@ -4,6 +4,7 @@
 #include <thread>
 
 #include "plumb/components/topic_wait.hpp"
+#include "plumb/core/edit_distance.hpp"
 
 namespace plumb::cli {
 
@@ -29,7 +30,7 @@ const transport::TypeSupport& resolve_topic_type(transport::Participant& partici
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   } while (std::chrono::steady_clock::now() < deadline);
-  const std::string hint = components::did_you_mean(components::closest_topic_names(participant, topic));
+  const std::string hint = did_you_mean(components::closest_topic_names(participant, topic));
   throw transport::Error("unknown topic '" + topic + "': " + (hint.empty() ? "" : hint + " (") + "not a plumb topic name (" +
                          known_names() + ") and not seen on the network" + (hint.empty() ? "" : ")"));
 }

@@ -10,6 +10,8 @@
 #include "plumb/components/cli.hpp"
 #include "plumb/components/params_file.hpp"
 #include "plumb/estimator/assignments.hpp"
+#include "plumb/estimator/parameter_reader.hpp"
+#include "plumb/estimator/runner.hpp"
 
 namespace plumb::components {
 namespace {
@@ -55,7 +57,7 @@ TEST_F(ParamsFile, UnknownKeyIsRefusedWithFileAndLine) {
     estimator::assign_parameters({plugin("strapdown", {"latitude_deg"})}, entries, std::nullopt);
     FAIL() << "accepted an unknown key";
   } catch (const estimator::ParameterError& e) {
-    EXPECT_EQ(std::string(e.what()), path_ + ":3: 'latitud_deg': strapdown has no such parameter (see plumb plugins -v)");
+    EXPECT_EQ(std::string(e.what()), path_ + ":3: 'latitud_deg': strapdown has no such parameter: did you mean latitude_deg? (see plumb plugins -v)");
   }
 }
 
@@ -66,6 +68,46 @@ TEST_F(ParamsFile, PluginNotSelectedIsRefusedWithFileAndLine) {
     FAIL() << "accepted a plugin that is not selected";
   } catch (const estimator::ParameterError& e) {
     EXPECT_EQ(std::string(e.what()), path_ + ":4: estimator 'strapdwn' is not selected");
+  }
+  // A near miss of a selected plugin's name is suggested.
+  const auto typo = read_params_file(write("strapdwn:\n  gravity: 9.8\n"));
+  try {
+    estimator::assign_parameters({plugin("static", {"window"}), plugin("strapdown", {"gravity"})}, typo, std::nullopt);
+    FAIL() << "accepted a plugin that is not selected";
+  } catch (const estimator::ParameterError& e) {
+    EXPECT_EQ(std::string(e.what()), path_ + ":2: estimator 'strapdwn' is not selected: did you mean strapdown?");
+  }
+}
+
+// A plugin that reads one number in [-90, 90], as the real ones read theirs.
+class LatitudeOnly : public estimator::Estimator {
+ public:
+  estimator::Info info() const override { return plugin("nav", {"latitude_deg", "grade"}); }
+  void configure(const estimator::Parameters& p) override {
+    estimator::ParameterReader(p, info().parameters).number("latitude_deg", -90, 90);
+  }
+  void push(std::span<const Sample>, std::vector<Estimate>&) override {}
+  void flush(std::vector<Estimate>&) override {}
+  estimator::Counters counters() const override { return {}; }
+};
+
+// A value the plugin refuses (a word for a number, out of range) is reported at its file and line.
+TEST_F(ParamsFile, BadValueIsRefusedWithFileAndLine) {
+  const auto entries = read_params_file(write("nav:\n  grade: mems\n  latitude_deg: abc\n"));
+  estimator::Runner runner;
+  runner.add("nav", estimator::EstimatorPtr(new LatitudeOnly, [](estimator::Estimator* e) { delete e; }));
+  try {
+    runner.configure(entries, std::nullopt);
+    FAIL() << "accepted a word for a number";
+  } catch (const estimator::ParameterError& e) {
+    EXPECT_EQ(std::string(e.what()), path_ + ":3: parameter 'latitude_deg': 'abc' is not a number in [-90, 90]");
+  }
+  // The same from --param: no file to name, the message as the plugin gave it.
+  try {
+    runner.configure({"latitude_deg=91"}, std::nullopt);
+    FAIL() << "accepted 91 degrees of latitude";
+  } catch (const estimator::ParameterError& e) {
+    EXPECT_EQ(std::string(e.what()), "parameter 'latitude_deg': '91' is not a number in [-90, 90]");
   }
 }
 

@@ -21,5 +21,17 @@ TEST(EditDistance, TextbookValuesAndMetricProperties) {
   }
 }
 
+// The suggestions: a typo's few edits, a name cut short, the closest first; nothing for a known
+// name or a different one.
+TEST(ClosestNames, SuggestNearMissesOnly) {
+  const std::vector<std::string> names{"static", "integral", "compensated", "strapdown"};
+  EXPECT_EQ(closest_names("strapdwn", names), std::vector<std::string>{"strapdown"});
+  EXPECT_EQ(closest_names("compens", names), std::vector<std::string>{"compensated"});
+  EXPECT_TRUE(closest_names("strapdown", names).empty());
+  EXPECT_TRUE(closest_names("kalman", names).empty());
+  EXPECT_EQ(did_you_mean({"a", "b", "c"}), "did you mean a, b or c?");
+  EXPECT_EQ(did_you_mean({}), "");
+}
+
 }  // namespace
 }  // namespace plumb

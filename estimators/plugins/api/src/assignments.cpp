@@ -1,5 +1,7 @@
 #include "plumb/estimator/assignments.hpp"
 
+#include "plumb/core/edit_distance.hpp"
+
 namespace plumb::estimator {
 
 bool declares_parameter(const Info& info, const std::string& name) {
@@ -12,9 +14,20 @@ std::string with_origin(const std::string& origin, const std::string& assignment
   return origin + kOriginSeparator + assignment;
 }
 
+namespace {
+
+// ": did you mean X?" or "".
+std::string hint(const std::string& name, const std::vector<std::string>& candidates) {
+  const std::string text = did_you_mean(closest_names(name, candidates));
+  return text.empty() ? text : ": " + text;
+}
+
+}  // namespace
+
 std::vector<Parameters> assign_parameters(const std::vector<Info>& estimators, const std::vector<std::string>& assignments,
-                                          std::optional<double> window_s) {
+                                          std::optional<double> window_s, std::vector<ParameterOrigins>* origins) {
   std::vector<Parameters> out(estimators.size());
+  if (origins != nullptr) origins->assign(estimators.size(), {});
   for (std::size_t i = 0; i < estimators.size(); ++i) {
     if (window_s && declares_parameter(estimators[i], "window")) out[i]["window"] = std::to_string(*window_s);
   }
@@ -31,21 +44,37 @@ std::vector<Parameters> assign_parameters(const std::vector<Info>& estimators, c
       only = key.substr(0, dot);
       key = key.substr(dot + 1);
       bool selected = false;
-      for (const auto& info : estimators) selected = selected || info.name == only;
-      if (!selected) throw ParameterError(where + ": estimator '" + only + "' is not selected");
+      std::vector<std::string> names;
+      for (const auto& info : estimators) {
+        selected = selected || info.name == only;
+        names.push_back(info.name);
+      }
+      if (!selected) throw ParameterError(where + ": estimator '" + only + "' is not selected" + hint(only, names));
     }
     bool used = false;
     for (std::size_t i = 0; i < estimators.size(); ++i) {
       if ((!only.empty() && estimators[i].name != only) || !declares_parameter(estimators[i], key)) continue;
       out[i][key] = kv.substr(eq + 1);
+      if (origins != nullptr && separator != std::string::npos) (*origins)[i][key] = where;
       used = true;
     }
-    if (!used)
+    if (!used) {
+      std::vector<std::string> declared;
+      for (const auto& info : estimators)
+        if (only.empty() || info.name == only)
+          for (const auto& spec : info.parameters) declared.push_back(spec.name);
       throw ParameterError((separator == std::string::npos ? "--param '" + key + "'" : where + ": '" + key + "'") + ": " +
                            (only.empty() ? "no selected estimator has that parameter" : only + " has no such parameter") +
-                           " (see plumb plugins -v)");
+                           hint(key, declared) + " (see plumb plugins -v)");
+    }
   }
   return out;
+}
+
+std::string located(const std::string& message, const ParameterOrigins& origins) {
+  for (const auto& [key, origin] : origins)
+    if (message.find("'" + key + "'") != std::string::npos) return origin + ": " + message;
+  return message;
 }
 
 }  // namespace plumb::estimator

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <sstream>
 
 #include "plumb/core/number.hpp"
 
@@ -35,8 +36,9 @@ double ParameterReader::number(const std::string& name, double min, double max) 
   const auto parsed = parse_number(value);
   const double x = parsed.value_or(0);
   if (!parsed || x < min || x > max) {
-    throw ParameterError("parameter '" + name + "': '" + value + "' is not a number in [" + std::to_string(min) +
-                         ", " + std::to_string(max) + "]");
+    std::ostringstream range;  // shortest form: [-90, 90], not [-90.000000, 90.000000]
+    range << "[" << min << ", " << max << "]";
+    throw ParameterError("parameter '" + name + "': '" + value + "' is not a number in " + range.str());
   }
   return x;
 }

@@ -51,7 +51,16 @@ void Runner::configure(const std::vector<Parameters>& parameters) {
 }
 
 void Runner::configure(const std::vector<std::string>& assignments, std::optional<double> window_s) {
-  configure(assign_parameters(infos(), assignments, window_s));
+  std::vector<ParameterOrigins> origins;
+  const std::vector<Parameters> parameters = assign_parameters(infos(), assignments, window_s, &origins);
+  for (std::size_t i = 0; i < slots_.size(); ++i) {
+    slots_[i].parameters = parameters[i];
+    try {
+      slots_[i].estimator->configure(slots_[i].parameters);
+    } catch (const ParameterError& e) {
+      throw ParameterError(located(e.what(), origins[i]));  // a file's bad value: its file and line
+    }
+  }
 }
 
 void Runner::reset() {

@@ -82,30 +82,11 @@ std::string describe(const Kind& kind, const std::vector<Found>& found) {
          " to add folders)";
 }
 
-std::vector<std::string> close_names(const std::string& name, const std::vector<Found>& found) {
-  // A typo is a few characters; a third of the name would be another name altogether.
-  const std::size_t limit = std::max<std::size_t>(2, std::min<std::size_t>(4, name.size() / 3));
-  std::vector<std::pair<std::size_t, std::string>> scored;
-  for (const auto& f : found) {
-    const std::size_t d = edit_distance(name, f.name);
-    // A name cut short ("cyclone") is a typo of the whole one, however many letters are missing.
-    if (d <= limit || (name.size() >= 3 && f.name.starts_with(name))) scored.emplace_back(d, f.name);
-  }
-  std::sort(scored.begin(), scored.end());
-  std::vector<std::string> out;
-  for (const auto& [d, n] : scored) {
-    if (out.size() == 3) break;
-    out.push_back(n);
-  }
-  return out;
-}
-
 std::string unknown_name_message(const Kind& kind, const std::string& name, const std::vector<Found>& found) {
   std::string text = "unknown " + std::string(kind.label) + " '" + name + "'";
-  const auto close = close_names(name, found);
-  for (std::size_t i = 0; i < close.size(); ++i)
-    text += (i == 0 ? ": did you mean " : (i + 1 == close.size() ? " or " : ", ")) + close[i];
-  if (!close.empty()) text += "?";
+  std::vector<std::string> names;
+  for (const auto& f : found) names.push_back(f.name);
+  if (const std::string hint = did_you_mean(closest_names(name, names)); !hint.empty()) text += ": " + hint;
   return text + " (" + describe(kind, found) + ")";
 }
 

@@ -13,12 +13,10 @@
 namespace plumb::components {
 
 // Up to three known topic names closest to `topic` (edit distance): the exact names of idl/, the
-// attitude and navigation topics of the installed estimator plugins, and the topics discovered.
-// Empty when nothing is close or `topic` itself is known.
+// attitude and navigation topics of the installed estimator plugins, and the topics discovered
+// (plumb::closest_names; plumb::did_you_mean words them). Empty when nothing is close or `topic`
+// itself is known.
 std::vector<std::string> closest_topic_names(transport::Participant& participant, const std::string& topic);
-
-// "did you mean a or b?" or "" for no suggestion.
-std::string did_you_mean(const std::vector<std::string>& names);
 
 // Notes on stderr after 3, 6, 12, 24... s without a message on the topic (growing, so a long wait is
 // said, not shouted): matched writers, the topics that do have writers, and close names. An

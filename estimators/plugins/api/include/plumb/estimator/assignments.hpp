@@ -3,6 +3,7 @@
 // `window` (when given) to every one that has a window.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,10 +20,20 @@ bool declares_parameter(const Info& info, const std::string& name);
 inline constexpr char kOriginSeparator = '\x1f';
 std::string with_origin(const std::string& origin, const std::string& assignment);
 
+// Where each of an estimator's parameters was written (KEY -> "FILE:LINE"), for assignments that
+// carry an origin.
+using ParameterOrigins = std::map<std::string, std::string>;
+
 // One Parameters per estimator, in order; a later assignment of a key replaces an earlier one.
 // Throws ParameterError for an assignment that is not [PLUGIN.]KEY=VALUE or whose KEY no (such)
-// estimator declares (a typo must not pass silently).
+// estimator declares (a typo must not pass silently; a close name is suggested). `origins`, if
+// given, receives one ParameterOrigins per estimator.
 std::vector<Parameters> assign_parameters(const std::vector<Info>& estimators, const std::vector<std::string>& assignments,
-                                          std::optional<double> window_s);
+                                          std::optional<double> window_s,
+                                          std::vector<ParameterOrigins>* origins = nullptr);
+
+// A plugin's message about one of its parameters ("parameter 'KEY': ...") with where that
+// parameter was written in front, when it came from a file; the message itself otherwise.
+std::string located(const std::string& message, const ParameterOrigins& origins);
 
 }  // namespace plumb::estimator
