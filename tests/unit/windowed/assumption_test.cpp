@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "estimator_test_support.hpp"
 #include "plumb/core/attitude.hpp"
@@ -41,6 +42,30 @@ TEST(EstimatorAssumptions, GravityFarFromTheEarthsIsRefusedWithTheReason) {
     // Told that this is the local gravity, the same stream is accepted.
     const auto told = run_plugin(plugin, samples, {{"window", "0"}, {"gravity", "39.2266"}});
     EXPECT_TRUE(told[0].valid) << told[0].reason;
+    EXPECT_NE(est[0].reason.find("give `gravity` if this is right"), std::string::npos) << est[0].reason;
+  }
+}
+
+// A stream in g or mg, or a field in nT or gauss, is a unit mistake: the reason points at the
+// input's units, not at the reference parameters.
+TEST(EstimatorAssumptions, MagnitudesInAnotherUnitPointAtTheInputsUnits) {
+  const auto plain = simulate(scenario(30, 100, 0));
+  const std::pair<double, const char*> gravity_units[] = {{1 / 9.80665, "--units accel=g"},
+                                                         {1000 / 9.80665, "--units accel=mg"}};
+  for (const auto& [k, advice] : gravity_units) {
+    const auto est = run_plugin("compensated", scaled_gravity(plain, k));
+    ASSERT_EQ(est.size(), 1u);
+    EXPECT_FALSE(est[0].valid);
+    EXPECT_NE(est[0].reason.find(advice), std::string::npos) << est[0].reason;
+  }
+  const std::pair<double, const char*> field_units[] = {{1000, "--units mag=nT"}, {0.01, "--units mag=gauss"}};
+  for (const auto& [k, advice] : field_units) {
+    auto samples = plain;
+    for (auto& x : samples) x.b *= k;
+    const auto est = run_plugin("compensated", samples);
+    ASSERT_EQ(est.size(), 1u);
+    EXPECT_FALSE(est[0].azimuth_valid);
+    EXPECT_NE(est[0].reason.find(advice), std::string::npos) << est[0].reason;
   }
 }
 

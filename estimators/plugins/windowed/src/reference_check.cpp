@@ -22,6 +22,20 @@ void add_reason(Estimate& e, const char* fmt, Args... args) {
   e.reason = e.reason.empty() ? std::string(text) : e.reason + "; " + text;
 }
 
+// What a magnitude far outside the Earth's says: most often an input in another unit than the one
+// the estimators take (m/s^2, uT), where giving the reference would be the wrong remedy.
+const char* gravity_advice(double g) {
+  if (std::abs(g - 1) < 0.05) return "accelerometers in g? convert on input: --units accel=g";
+  if (std::abs(g - 1000) < 50) return "accelerometers in mg? convert on input: --units accel=mg";
+  return "give `gravity` if this is right";
+}
+const char* field_advice(double b) {
+  if (b > 0.2 && b < 0.7) return "magnetometers in gauss? convert on input: --units mag=gauss";
+  if (b > 0.02 && b < 0.07) return "magnetometers in mT? convert on input: --units mag=mT";
+  if (b > 20000 && b < 70000) return "magnetometers in nT? convert on input: --units mag=nT";
+  return "give `field_uT` if this is right";
+}
+
 // The data contradict the gravity assumption: nothing of this window can be trusted.
 void refuse_all(Estimate& e) {
   e.valid = e.azimuth_valid = e.toolface_valid = false;
@@ -75,8 +89,8 @@ void ReferenceCheck::apply(Estimate& e) {
   if (!e.valid) return;
   if (!gravity_) {
     if (e.total_g < kEarthGravityMin || e.total_g > kEarthGravityMax) {
-      add_reason(e, "|G| %.4g m/s^2 outside the Earth's %.4g-%.4g (give `gravity` if this is right)", e.total_g,
-                 kEarthGravityMin, kEarthGravityMax);
+      add_reason(e, "|G| %.4g m/s^2 outside the Earth's %.4g-%.4g (%s)", e.total_g, kEarthGravityMin, kEarthGravityMax,
+                 gravity_advice(e.total_g));
       refuse_all(e);
       return;
     }
@@ -89,8 +103,8 @@ void ReferenceCheck::apply(Estimate& e) {
   }
   if (!field_) {
     if (e.total_b < kEarthFieldMin || e.total_b > kEarthFieldMax) {
-      add_reason(e, "|B| %.4g uT outside the Earth's %.3g-%.3g (give `field_uT` if this is right)", e.total_b,
-                 kEarthFieldMin, kEarthFieldMax);
+      add_reason(e, "|B| %.4g uT outside the Earth's %.3g-%.3g (%s)", e.total_b, kEarthFieldMin, kEarthFieldMax,
+                 field_advice(e.total_b));
       refuse_azimuth(e);
     } else {
       field_ = e.total_b;
