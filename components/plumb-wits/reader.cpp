@@ -29,11 +29,7 @@ std::unique_ptr<wits::Link> make_link(const ReaderOptions& o) {
   if (!o.device.empty()) return wits::make_serial_link(o.device, o.baud, o.backoff);
   std::string address;
   int port = 0;
-  if (o.listen.find(':') == std::string::npos) {
-    wits::split_host_port("0.0.0.0:" + o.listen, "--listen", address, port);
-  } else {
-    wits::split_host_port(o.listen, "--listen", address, port);
-  }
+  wits::split_listen_address(o.listen, "--listen", address, port);
   return wits::make_tcp_server(address, port);
 }
 

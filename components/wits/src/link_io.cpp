@@ -1,5 +1,7 @@
 #include "link_io.hpp"
 
+#include <arpa/inet.h>
+
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <poll.h>
@@ -41,18 +43,41 @@ void keep_alive(int fd) {
   ::setsockopt(fd, IPPROTO_TCP, TCP_KEEPCNT, &count, sizeof count);
 }
 
-void split_host_port(const std::string& text, const std::string& what, std::string& host, int& port) {
-  const auto colon = text.rfind(':');
-  const std::string usage = what + ": expected HOST:PORT (e.g. 10.0.0.5:5000), got '" + text + "'";
-  if (colon == std::string::npos || colon == 0 || colon + 1 == text.size()) throw std::invalid_argument(usage);
-  host = text.substr(0, colon);
+int parse_port(const std::string& text, const std::string& what) {
+  const std::string bad = what + ": port '" + text + "' is not a number in 1-65535";
   try {
     std::size_t used = 0;
-    port = std::stoi(text.substr(colon + 1), &used);
-    if (used != text.size() - colon - 1 || port < 1 || port > 65535) throw std::invalid_argument(usage);
+    const int port = std::stoi(text, &used);
+    if (used != text.size() || port < 1 || port > 65535) throw std::invalid_argument(bad);
+    return port;
   } catch (const std::logic_error&) {
-    throw std::invalid_argument(usage);
+    throw std::invalid_argument(bad);
   }
+}
+
+void split_host_port(const std::string& text, const std::string& what, std::string& host, int& port) {
+  const auto colon = text.rfind(':');
+  if (colon == std::string::npos || colon == 0 || colon + 1 == text.size())
+    throw std::invalid_argument(what + ": expected HOST:PORT (e.g. 10.0.0.5:5000), got '" + text + "'");
+  host = text.substr(0, colon);
+  port = parse_port(text.substr(colon + 1), what);
+}
+
+void split_listen_address(const std::string& text, const std::string& what, std::string& address, int& port) {
+  const auto colon = text.rfind(':');
+  if (colon == std::string::npos) {
+    address = "0.0.0.0";
+    port = parse_port(text, what);
+    return;
+  }
+  if (colon == 0 || colon + 1 == text.size())
+    throw std::invalid_argument(what + ": expected [ADDRESS:]PORT (e.g. 5000 or 10.0.0.5:5000), got '" + text + "'");
+  address = text.substr(0, colon);
+  in_addr parsed{};
+  if (::inet_pton(AF_INET, address.c_str(), &parsed) != 1)
+    throw std::invalid_argument(what + ": '" + address + "' is not an IPv4 address of this computer (e.g. 0.0.0.0:" +
+                                text.substr(colon + 1) + " for every interface)");
+  port = parse_port(text.substr(colon + 1), what);
 }
 
 }  // namespace plumb::wits

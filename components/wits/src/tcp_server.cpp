@@ -30,7 +30,7 @@ class TcpServer final : public Link {
     a.sin_family = AF_INET;
     a.sin_port = htons(static_cast<std::uint16_t>(port));
     if (::inet_pton(AF_INET, address_.c_str(), &a.sin_addr) != 1)
-      throw std::invalid_argument("--bind: '" + address_ + "' is not an IPv4 address");
+      throw std::invalid_argument("'" + address_ + "' is not an IPv4 address");
     listen_fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
     const int on = 1;
     ::setsockopt(listen_fd_, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);

@@ -132,5 +132,31 @@ TEST(WitsLink, HostPortOption) {
   EXPECT_THROW(split_host_port(":5000", "--connect", host, port), std::invalid_argument);
 }
 
+// A server's [ADDRESS:]PORT: each mistake named for what it is (a port out of range, an address
+// that is not one), never as another option's.
+TEST(WitsLink, ListenOption) {
+  std::string address;
+  int port = 0;
+  split_listen_address("5000", "--listen", address, port);
+  EXPECT_EQ(address, "0.0.0.0");
+  EXPECT_EQ(port, 5000);
+  split_listen_address("127.0.0.1:5001", "--listen", address, port);
+  EXPECT_EQ(address, "127.0.0.1");
+  EXPECT_EQ(port, 5001);
+  const auto message = [&](const std::string& text) {
+    try {
+      split_listen_address(text, "--listen", address, port);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(message("99999"), "--listen: port '99999' is not a number in 1-65535");
+  EXPECT_EQ(message("0"), "--listen: port '0' is not a number in 1-65535");
+  EXPECT_EQ(message("50x"), "--listen: port '50x' is not a number in 1-65535");
+  EXPECT_EQ(message("foo:5000"), "--listen: 'foo' is not an IPv4 address of this computer (e.g. 0.0.0.0:5000 for every interface)");
+  EXPECT_EQ(message(":5000"), "--listen: expected [ADDRESS:]PORT (e.g. 5000 or 10.0.0.5:5000), got ':5000'");
+}
+
 }  // namespace
 }  // namespace plumb::wits

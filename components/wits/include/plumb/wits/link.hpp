@@ -43,6 +43,11 @@ struct Backoff {
 
 // HOST:PORT (a name or an IPv4 address); throws std::invalid_argument naming `what` otherwise.
 void split_host_port(const std::string& text, const std::string& what, std::string& host, int& port);
+// A TCP port, 1-65535; throws std::invalid_argument naming `what` otherwise.
+int parse_port(const std::string& text, const std::string& what);
+// A server's [ADDRESS:]PORT (ADDRESS an IPv4 address; none: every interface, 0.0.0.0); throws
+// std::invalid_argument naming `what` otherwise.
+void split_listen_address(const std::string& text, const std::string& what, std::string& address, int& port);
 
 std::unique_ptr<Link> make_tcp_client(const std::string& host, int port, Backoff backoff = {});
 // Listens on ADDRESS:PORT (empty address: every interface). One connection at a time: a new one
