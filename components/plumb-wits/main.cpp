@@ -38,6 +38,17 @@ void add_depth_options(CLI::App& app, ReaderOptions& o, std::string& units, std:
   app.add_option("--slips-item", slips, "WITS item whose non-zero value says the string is in slips (default: from the depth)");
   app.add_option("--moving-tolerance", o.depth.moving_tolerance_m, "from the depth: a change beyond this is motion, m")
       ->capture_default_str();
+  app.add_option("--moving-window", o.depth.moving_window_s,
+                 "from the depth: a change beyond the tolerance over this window is motion too (slow drilling), s")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--max-depth", o.depth.max_depth_m, "a bit depth beyond this is refused and counted, m")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--max-speed", o.depth.max_speed_mps,
+                 "a bit depth that moved faster than this is refused and counted (3 frames that hold: taken), m/s")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   app.add_option("--slips-after", o.depth.slips_still_s,
                  "from the depth: still this long with the bit off bottom is in slips, s (0: never)")
       ->capture_default_str();

@@ -43,7 +43,8 @@ components::CounterList counters(const wits::Link& link, const wits::FrameParser
           {"garbage_bytes", p.garbage_bytes}, {"garbage_runs", p.garbage_runs},
           {"bad_lines", p.bad_lines},         {"cut_frames", p.cut_frames},
           {"empty_frames", p.empty_frames},   {"frames_without_depth", d.frames_without_depth},
-          {"bad_values", d.bad_values},       {"connects", l.connects},
+          {"bad_values", d.bad_values},       {"depths_out_of_range", d.out_of_range},
+          {"depth_jumps", d.jumps},           {"connects", l.connects},
           {"reconnects", l.reconnects},       {"disconnects", l.disconnects},
           {"bytes_read", l.bytes_read}};
 }
@@ -138,6 +139,8 @@ int run_reader(const ReaderOptions& o) {
   std::cout << kProgram << ": " << p.frames << " frames, " << published << " depths published, " << p.garbage_bytes
             << " garbage bytes in " << p.garbage_runs << " runs, " << p.bad_lines << " bad lines, " << p.cut_frames
             << " cut frames, " << decoder.counters().frames_without_depth << " frames without depth, "
+            << decoder.counters().out_of_range << " depths out of range, " << decoder.counters().jumps
+            << " depth jumps refused, "
             << link->counters().connects << " connections" << std::endl;
   status.publish("stopping", counters(*link, parser, decoder, published));
   components::sleep_while_running(o.linger_s);

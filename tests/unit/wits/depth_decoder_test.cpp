@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "plumb/wits/depth_decoder.hpp"
 
@@ -55,10 +56,79 @@ TEST(WitsDepthDecoder, OtherItemsCarryTheDepthWhenMapped) {
 }
 
 TEST(WitsDepthDecoder, MovingFromTheDepthItself) {
-  DepthDecoder d({});
+  DepthOptions o;
+  o.moving_window_s = 0;  // the step between two frames alone
+  DepthDecoder d(o);
   EXPECT_FALSE(d.decode(items({{108, "100.00"}}), 0)->moving);
   EXPECT_TRUE(d.decode(items({{108, "100.05"}}), 1)->moving);
   EXPECT_FALSE(d.decode(items({{108, "100.055"}}), 2)->moving);  // within 1 cm
+}
+
+// Drilling at 30 m/h with a frame a second: 8 mm steps, each under the 1 cm tolerance, are motion
+// by their trend over the window; a stop is still once the window has held still.
+TEST(WitsDepthDecoder, SlowDrillingIsMovingByItsTrend) {
+  DepthDecoder d({});
+  const double rate_mps = 30.0 / 3600;
+  int moving = 0;
+  double depth = 1000;
+  for (int t = 0; t <= 60; ++t, depth += rate_mps) {
+    const auto r = d.decode(items({{108, std::to_string(depth).c_str()}}), t);
+    ASSERT_TRUE(r);
+    if (t >= 2) {
+      EXPECT_TRUE(r->moving) << "t " << t;
+    }
+    moving += r->moving;
+  }
+  EXPECT_GE(moving, 59);
+  const std::string stopped = std::to_string(depth);
+  bool still_after_window = false;
+  for (int t = 61; t <= 70; ++t) {
+    const auto r = d.decode(items({{108, stopped.c_str()}}), t);
+    if (t >= 61 + 6) still_after_window = !r->moving;
+  }
+  EXPECT_TRUE(still_after_window);
+  // The same steps with no window: never moving (what the depth used to say).
+  DepthOptions step_only;
+  step_only.moving_window_s = 0;
+  DepthDecoder old(step_only);
+  depth = 1000;
+  int old_moving = 0;
+  for (int t = 0; t <= 60; ++t, depth += rate_mps) old_moving += old.decode(items({{108, std::to_string(depth).c_str()}}), t)->moving;
+  EXPECT_EQ(old_moving, 0);
+}
+
+// Depths a rig cannot report are refused and counted, never published.
+TEST(WitsDepthDecoder, ImpossibleDepthsAreRefused) {
+  DepthDecoder d({});
+  EXPECT_FALSE(d.decode(items({{108, "-5"}}), 0));
+  EXPECT_FALSE(d.decode(items({{108, "1e308"}}), 1));
+  EXPECT_FALSE(d.decode(items({{108, "16000"}}), 2));
+  EXPECT_EQ(d.counters().out_of_range, 3u);
+  EXPECT_EQ(d.counters().depths, 0u);
+  EXPECT_TRUE(d.decode(items({{108, "-0.5"}}), 3));  // the bit just above the rig floor
+  EXPECT_TRUE(d.decode(items({{108, "0"}}), 4));
+}
+
+// A depth that jumps faster than a rig moves is refused; one spike is forgotten, a new level that
+// holds for three frames is taken (a feed reset, a depth corrected at the rig).
+TEST(WitsDepthDecoder, JumpsAreRefusedUntilANewLevelHolds) {
+  DepthDecoder d({});
+  ASSERT_TRUE(d.decode(items({{108, "1000"}}), 0));
+  EXPECT_FALSE(d.decode(items({{108, "5000"}}), 1));  // a spike
+  const auto back = d.decode(items({{108, "1000.5"}}), 2);
+  ASSERT_TRUE(back);
+  EXPECT_DOUBLE_EQ(back->bit_depth_m, 1000.5);
+  EXPECT_FALSE(d.decode(items({{108, "2000"}}), 3));
+  EXPECT_FALSE(d.decode(items({{108, "2000"}}), 4));
+  const auto level = d.decode(items({{108, "2000"}}), 5);
+  ASSERT_TRUE(level);
+  EXPECT_DOUBLE_EQ(level->bit_depth_m, 2000);
+  EXPECT_EQ(d.counters().jumps, 3u);
+  EXPECT_TRUE(d.decode(items({{108, "2001"}}), 6));  // from the new level on
+  // A trip at 1.5 m/s is no jump.
+  DepthDecoder trip({});
+  for (int t = 0; t < 20; ++t) ASSERT_TRUE(trip.decode(items({{108, std::to_string(500 + 1.5 * t).c_str()}}), t)) << t;
+  EXPECT_EQ(trip.counters().jumps, 0u);
 }
 
 TEST(WitsDepthDecoder, InSlipsFromTheDepthItself) {

@@ -5,9 +5,11 @@
 
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "plumb/wits/frame_parser.hpp"
 
@@ -22,7 +24,20 @@ struct DepthOptions {
   int slips_item = -1;    // an item whose non-zero value says the string is in slips (-1: from the depth)
   double unit_m = 1.0;    // metres per unit of the feed's depths (kFootInMetres for a feed in feet)
   double sensor_offset_m = 0;        // how far the sensor sits behind (above) the bit
-  double moving_tolerance_m = 0.01;  // derived: a bit depth change beyond this since the last frame is motion
+  double moving_tolerance_m = 0.01;  // derived: a bit depth change beyond this is motion, since the last
+                                     // frame or over the last moving_window_s (slow drilling: 30 m/h
+                                     // is 8 mm between two frames a second apart)
+  double moving_window_s = 5;
+  // A depth a rig cannot report is refused and counted, never published: a bit depth outside
+  // [min_depth_m, max_depth_m] (the deepest wells are 12-15 km), or one that moved faster than
+  // max_speed_mps from the last depth accepted (a rig's blocks travel at most 1-2 m/s; over the
+  // time between their arrivals, at least one second: frames delivered together). A new
+  // level that holds (jump_confirm_frames frames in a row within that speed of each other) is a
+  // feed that was reset or a depth corrected at the rig: it is taken from then on.
+  double min_depth_m = -1;
+  double max_depth_m = 15000;
+  double max_speed_mps = 5;
+  int jump_confirm_frames = 3;
   double slips_still_s = 10;         // derived: still this long with the bit off bottom is in slips (0: never)
   double off_bottom_m = 0.5;         // derived: the bit this far above the hole depth is off bottom
 };
@@ -40,6 +55,8 @@ struct DecoderCounters {
   std::uint64_t depths = 0;             // frames that gave a depth
   std::uint64_t frames_without_depth = 0;  // frames without a usable bit depth item
   std::uint64_t bad_values = 0;         // items read (depths, flags) whose value is not a number
+  std::uint64_t out_of_range = 0;       // bit depths outside [min_depth_m, max_depth_m] or not finite
+  std::uint64_t jumps = 0;              // bit depths that moved faster than max_speed_mps
 };
 
 class DepthDecoder {
@@ -53,10 +70,18 @@ class DepthDecoder {
  private:
   std::optional<double> number(const Frame& frame, int code);
 
+  bool plausible(double bit_m, double t_s);
+  bool moving_by_trend(double bit_m, double t_s);
+
   DepthOptions o_;
   DecoderCounters c_;
   double last_bit_m_ = std::numeric_limits<double>::quiet_NaN();
+  double last_t_s_ = std::numeric_limits<double>::quiet_NaN();
   double still_since_s_ = std::numeric_limits<double>::quiet_NaN();
+  // The frames refused as a jump in a row (the candidate new level's last depth and time).
+  int jumped_ = 0;
+  double jump_bit_m_ = 0, jump_t_s_ = 0;
+  std::deque<std::pair<double, double>> recent_;  // (t_s, bit_m) over the last moving_window_s
 };
 
 // "0108" or "108" -> 108; throws std::invalid_argument naming `what` otherwise.
