@@ -1,0 +1,88 @@
+#include "depth_clock.hpp"
+
+#include <cmath>
+
+namespace plumb::survey_component {
+namespace {
+
+clock_sync::DepthStillnessOptions depth_still_options(const DepthClockOptions& o) {
+  clock_sync::DepthStillnessOptions d;
+  d.tolerance_m = o.still_tolerance_m;
+  return d;
+}
+
+std::uint64_t clock_us(double s) { return static_cast<std::uint64_t>(std::llround(std::abs(s) * 1e6)); }
+
+}  // namespace
+
+DepthClock::DepthClock(DepthClockOptions options) : options_(options), depth_still_(depth_still_options(options)) {
+  if (options_.offset_s || options_.drift_ppm) {
+    clock_sync::ClockEstimate e;
+    e.offset_s = options_.offset_s.value_or(0);
+    e.drift = options_.drift_ppm.value_or(0) * 1e-6;
+    given_ = e;
+  }
+}
+
+void DepthClock::add_depth(const survey::DepthReport& d) {
+  if (!given_) {
+    if (d.t_s <= last_depth_t_) {
+      ++out_of_order_;
+      return;
+    }
+    last_depth_t_ = d.t_s;
+    if (auto run = depth_still_.add(d.t_s, d.depth_m)) fit_.add_depth_run(*run);
+  }
+  held_.push_back(d);
+  if (held_.size() > options_.max_held) {
+    held_.pop_front();
+    ++dropped_;
+  }
+}
+
+void DepthClock::add_sensor(const Sample& s) {
+  if (given_ || s.t <= last_sensor_t_) return;
+  last_sensor_t_ = s.t;
+  if (auto run = sensor_still_.add_sample(s.t, s.f, s.w, (s.flags & flags::kHasGyro) != 0)) fit_.add_sensor_run(*run);
+}
+
+const std::optional<clock_sync::ClockEstimate>& DepthClock::alignment() { return given_ ? given_ : fit_.estimate(); }
+
+std::vector<survey::DepthReport> DepthClock::take_aligned() {
+  std::vector<survey::DepthReport> out;
+  const auto& a = alignment();
+  if (!a) return out;
+  out.reserve(held_.size());
+  for (auto d : held_) {
+    d.t_s = a->sensor_time(d.t_s);
+    out.push_back(d);
+  }
+  held_.clear();
+  return out;
+}
+
+std::string DepthClock::describe() {
+  if (given_)
+    return "depth clock given: " + clock_sync::describe(given_, 0, 0).substr(std::string("depth clock ").size()) +
+           " (--depth-clock-offset/--depth-clock-drift-ppm: not estimated)";
+  std::string line = clock_sync::describe(fit_.estimate(), fit_.depth_runs(), fit_.sensor_runs());
+  if (!fit_.estimate()) line += ": " + fit_.why_not();
+  return line;
+}
+
+std::vector<std::pair<std::string, std::uint64_t>> DepthClock::counters() {
+  const auto& a = alignment();
+  const double offset = a ? a->offset_s : 0, drift = a ? a->drift : 0;
+  return {{"depth_clock_state", given_ ? 2u : (a ? 1u : 0u)},  // 0 waiting, 1 estimated, 2 given
+          {"depth_clock_ahead_us", offset > 0 ? clock_us(offset) : 0},
+          {"depth_clock_behind_us", offset < 0 ? clock_us(offset) : 0},
+          {"depth_clock_sd_us", a ? clock_us(a->offset_sd_s) : 0},
+          {"depth_clock_fast_ppb", drift > 0 ? clock_us(drift * 1e3) : 0},
+          {"depth_clock_slow_ppb", drift < 0 ? clock_us(drift * 1e3) : 0},
+          {"depth_clock_drift_sd_ppb", a ? clock_us(a->drift_sd * 1e3) : 0},
+          {"depth_clock_stops", a ? a->matched : 0},
+          {"depths_held", held_.size()},
+          {"depths_dropped_unaligned", dropped_}};
+}
+
+}  // namespace plumb::survey_component
