@@ -46,7 +46,12 @@ void DepthClock::add_sensor(const Sample& s) {
   if (auto run = sensor_still_.add_sample(s.t, s.f, s.w, (s.flags & flags::kHasGyro) != 0)) fit_.add_sensor_run(*run);
 }
 
-const std::optional<clock_sync::ClockEstimate>& DepthClock::alignment() { return given_ ? given_ : fit_.estimate(); }
+const std::optional<clock_sync::ClockEstimate>& DepthClock::alignment() {
+  if (given_) return given_;
+  fit_.set_coverage(depth_still_.first_t(), depth_still_.settled_until(), sensor_still_.first_t(),
+                    sensor_still_.settled_until());
+  return fit_.estimate();
+}
 
 std::vector<survey::DepthReport> DepthClock::take_aligned() {
   std::vector<survey::DepthReport> out;
@@ -65,8 +70,9 @@ std::string DepthClock::describe() {
   if (given_)
     return "depth clock given: " + clock_sync::describe(given_, 0, 0).substr(std::string("depth clock ").size()) +
            " (--depth-clock-offset/--depth-clock-drift-ppm: not estimated)";
-  std::string line = clock_sync::describe(fit_.estimate(), fit_.depth_runs(), fit_.sensor_runs());
-  if (!fit_.estimate()) line += ": " + fit_.why_not();
+  const auto& a = alignment();
+  std::string line = clock_sync::describe(a, fit_.depth_runs(), fit_.sensor_runs());
+  if (!a) line += ": " + fit_.why_not();
   return line;
 }
 

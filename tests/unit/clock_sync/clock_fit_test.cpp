@@ -91,6 +91,18 @@ TEST(ClockFit, PeriodicStopsWaitForAStopThatTellsOffsetsApart) {
   EXPECT_EQ(f.estimate()->matched, 3u);
 }
 
+TEST(ClockFit, AStopTheOtherStreamWatchedAndDidNotSeeRulesAnOffsetOut) {
+  // Alike stops, the depth feed's last one not settled yet: shifting by a stand matches as many,
+  // but puts the sensors' first stop where the depth was watching and standing nowhere.
+  ClockFit f;
+  for (double t : {100.0, 165.0, 230.0, 295.0, 360.0}) f.add_sensor_run({t, t + 30});
+  for (double t : {100.0, 165.0, 230.0, 295.0}) f.add_depth_run({t + 320, t + 30 + 320});
+  f.set_coverage(320 + 0, 320 + 380, 0, 420);
+  ASSERT_TRUE(f.estimate().has_value()) << f.why_not();
+  EXPECT_NEAR(f.estimate()->offset_s, 320, 0.01);
+  EXPECT_EQ(f.estimate()->matched, 4u);
+}
+
 TEST(ClockFit, NothingBeforeTwoStopsAgree) {
   ClockFit f;
   EXPECT_FALSE(f.estimate().has_value());

@@ -101,6 +101,7 @@ struct RigDay {
     SensorStillness sensors;
     for (const auto& [t, m] : sensor_motion())
       if (auto r = sensors.add_motion(t, m)) f.add_sensor_run(*r);
+    f.set_coverage(depth.first_t(), depth.settled_until(), sensors.first_t(), sensors.settled_until());
     return f;
   }
 };

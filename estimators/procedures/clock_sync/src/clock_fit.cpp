@@ -12,6 +12,11 @@ struct ClockCandidate {
   double offset_s = 0;
   std::size_t count = 0;
   double abs_sum_s = 0;
+  long score = 0;  // matched - runs the other stream should have seen and did not
+};
+
+struct ClockCoverage {
+  double depth_from, depth_until, sensor_from, sensor_until;
 };
 
 struct ClockPair {
@@ -37,13 +42,26 @@ const StillRun* clock_nearest_depth(const std::deque<StillRun>& depth, const Sti
 }
 
 ClockCandidate clock_score(double offset_s, const std::deque<StillRun>& depth, const std::deque<StillRun>& sensor,
-                           const ClockFitOptions& o) {
-  ClockCandidate c{offset_s, 0, 0};
-  for (const auto& s : sensor)
+                           const ClockFitOptions& o, const ClockCoverage& cover) {
+  ClockCandidate c{offset_s, 0, 0, 0};
+  const double margin = o.match_tolerance_s;
+  std::size_t missed = 0;
+  for (const auto& s : sensor) {
     if (const StillRun* d = clock_nearest_depth(depth, s, s.mid_s() + offset_s, o.match_tolerance_s, o)) {
       ++c.count;
       c.abs_sum_s += std::abs(d->mid_s() - s.mid_s() - offset_s);
+    } else if (s.begin_s + offset_s - margin > cover.depth_from && s.end_s + offset_s + margin < cover.depth_until) {
+      ++missed;  // the depth was watching and stood still nowhere near
     }
+  }
+  for (const auto& d : depth) {
+    if (d.begin_s - offset_s - margin <= cover.sensor_from || d.end_s - offset_s + margin >= cover.sensor_until) continue;
+    bool seen = false;
+    for (const auto& s : sensor)
+      if (std::abs(d.mid_s() - s.mid_s() - offset_s) <= o.match_tolerance_s && clock_durations_agree(d, s, o)) seen = true;
+    if (!seen) ++missed;
+  }
+  c.score = static_cast<long>(c.count) - static_cast<long>(missed);
   return c;
 }
 
@@ -76,6 +94,13 @@ void ClockFit::add_depth_run(const StillRun& r) {
   dirty_ = true;
 }
 
+void ClockFit::set_coverage(double depth_from_s, double depth_until_s, double sensor_from_s, double sensor_until_s) {
+  depth_from_ = depth_from_s;
+  depth_until_ = depth_until_s;
+  sensor_from_ = sensor_from_s;
+  sensor_until_ = sensor_until_s;
+}
+
 void ClockFit::add_sensor_run(const StillRun& r) {
   sensor_.push_back(r);
   if (sensor_.size() > options_.max_runs) sensor_.pop_front();
@@ -96,27 +121,32 @@ void ClockFit::compute() {
     return;
   }
   // Every offset at which two runs coincide: where the cross-correlation of the still/moving series can peak.
+  const ClockCoverage cover{depth_from_, depth_until_, sensor_from_, sensor_until_};
   std::vector<ClockCandidate> candidates;
   for (const auto& d : depth_)
     for (const auto& s : sensor_)
-      if (clock_durations_agree(d, s, o)) candidates.push_back(clock_score(d.mid_s() - s.mid_s(), depth_, sensor_, o));
+      if (clock_durations_agree(d, s, o)) candidates.push_back(clock_score(d.mid_s() - s.mid_s(), depth_, sensor_, o, cover));
   std::size_t best_count = 0;
   for (const auto& c : candidates) best_count = std::max(best_count, c.count);
   if (best_count < o.min_matched) {
     why_not_ = std::to_string(best_count) + " stop(s) matched so far (" + std::to_string(o.min_matched) + " needed)";
     return;
   }
-  // Offsets that explain as many stops: one cluster is one answer, two are an ambiguity.
+  long best_score = -1000000;
+  for (const auto& c : candidates)
+    if (c.count >= o.min_matched) best_score = std::max(best_score, c.score);
+  // Offsets that explain the stops as well: one cluster is one answer, two are an ambiguity.
   std::vector<ClockCandidate> top;
   for (const auto& c : candidates)
-    if (c.count == best_count) top.push_back(c);
+    if (c.count >= o.min_matched && c.score == best_score) top.push_back(c);
   std::sort(top.begin(), top.end(), [](const ClockCandidate& a, const ClockCandidate& b) { return a.offset_s < b.offset_s; });
   std::size_t clusters = 1;
   ClockCandidate best = top.front();
   for (std::size_t i = 1; i < top.size(); ++i) {
     if (top[i].offset_s - top[i - 1].offset_s > 2 * o.match_tolerance_s) ++clusters;
-    if (top[i].abs_sum_s < best.abs_sum_s) best = top[i];
+    if (top[i].count > best.count || (top[i].count == best.count && top[i].abs_sum_s < best.abs_sum_s)) best = top[i];
   }
+  best_count = best.count;
   if (clusters > 1) {
     char line[200];
     std::snprintf(line, sizeof line, "%zu offsets explain %zu stops each (e.g. %.1f s and %.1f s): waiting for a stop "

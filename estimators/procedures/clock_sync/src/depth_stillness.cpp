@@ -98,6 +98,7 @@ std::optional<StillRun> DepthStillness::add(double t_s, double depth_m) {
   if (!have_ || t_s - last_t_ > options_.max_gap_s) {
     // Nothing is known before this report: a stand starting here has no known beginning, and one
     // that was waiting has no known end.
+    if (!have_) first_t_ = t_s;
     have_ = true;
     last_t_ = t_s;
     pending_.reset();

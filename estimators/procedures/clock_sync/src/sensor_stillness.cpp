@@ -32,6 +32,7 @@ std::optional<StillRun> SensorStillness::close_block() {
 std::optional<StillRun> SensorStillness::add_motion(double t_s, bool moving) {
   if (!have_ || t_s - last_t_ > options_.max_gap_s) {
     // A gap: neither the motion before it nor a still run across it is known.
+    if (!have_) first_t_ = t_s;
     have_ = true;
     in_still_ = false;
     after_motion_ = false;

@@ -3,7 +3,9 @@
 // Candidate offsets come from every pair of runs of similar duration (one depth run, one sensor run:
 // the cross-correlation of the two still/moving series, evaluated only where it can peak); the
 // offset that matches the most runs wins, and must win alone (a periodic pattern of stops that two
-// offsets explain equally waits for a stop that tells them apart). The matched midpoints then give
+// offsets explain equally waits for a stop that tells them apart). A run that an offset puts where
+// the other stream was watching and saw no stop counts against that offset (coverage): a stream
+// that began later, or whose last stops are not settled yet, is not held against any. The matched midpoints then give
 // offset and drift by least squares (drift with a prior, stated), re-matched until stable; sigma
 // from the residuals, never below the timing floor.
 #pragma once
@@ -50,6 +52,10 @@ class ClockFit {
   explicit ClockFit(ClockFitOptions options = {});
   void add_depth_run(const StillRun& r);
   void add_sensor_run(const StillRun& r);
+  // Where each stream could have given a run (its own clock): from its first observation to the
+  // time up to which its runs are settled. Used at the next estimate; without it no run counts
+  // against an offset.
+  void set_coverage(double depth_from_s, double depth_until_s, double sensor_from_s, double sensor_until_s);
   // The estimate from every run so far; nothing until min_matched runs match one offset alone.
   // Recomputed only after a new run.
   const std::optional<ClockEstimate>& estimate();
@@ -63,6 +69,7 @@ class ClockFit {
 
   ClockFitOptions options_;
   std::deque<StillRun> depth_, sensor_;
+  double depth_from_ = 0, depth_until_ = -1, sensor_from_ = 0, sensor_until_ = -1;
   bool dirty_ = false;
   std::optional<ClockEstimate> estimate_;
   std::string why_not_ = "no still run seen yet";

@@ -31,6 +31,10 @@ class DepthStillness {
   // A still run that is now known to have ended, else nothing.
   std::optional<StillRun> add(double t_s, double depth_m);
   std::size_t reports() const { return reports_; }
+  // Coverage for ClockFit::set_coverage: the first report, and the time before which every run
+  // has been given (a run is given fit_span_s + 2 min_still_s after its end).
+  double first_t() const { return first_t_; }
+  double settled_until() const { return last_t_ - options_.fit_span_s - 2 * options_.min_still_s - 1; }
 
  private:
   // Reports within the tolerance of each other, begun after `prev_t` (the report before them).
@@ -49,7 +53,7 @@ class DepthStillness {
 
   DepthStillnessOptions options_;
   bool have_ = false;
-  double last_t_ = 0;
+  double last_t_ = 0, first_t_ = 0;
   DepthPiece piece_;                  // being filled
   std::optional<DepthPiece> pending_; // a finished still piece, waiting to see whether the stand goes on
   std::optional<DepthPiece> leaving_; // a stand that ended, collecting the reports that follow it

@@ -27,6 +27,10 @@ class SensorStillness {
   std::optional<StillRun> add_sample(double t_s, const Eigen::Vector3d& f, const Eigen::Vector3d& w, bool has_gyro);
   // One judged block (when the caller judges motion itself).
   std::optional<StillRun> add_motion(double t_s, bool moving);
+  // Coverage for ClockFit::set_coverage: the first block, and the time before which every run has
+  // been given.
+  double first_t() const { return first_t_; }
+  double settled_until() const { return last_t_ - options_.min_moving_s - options_.block_s; }
 
  private:
   std::optional<StillRun> close_block();
@@ -39,7 +43,7 @@ class SensorStillness {
   double wmax_ = 0;
   // The still/moving state machine.
   bool have_ = false;
-  double last_t_ = 0;
+  double last_t_ = 0, first_t_ = 0;
   bool in_still_ = false, after_motion_ = false, seen_motion_ = false;
   double still_begin_ = 0, last_still_t_ = 0, last_moving_t_ = 0;
   bool moving_pending_ = false;
