@@ -75,6 +75,9 @@ StillRun DepthStillness::placed(const DepthPiece& p, const std::vector<std::pair
 std::optional<StillRun> DepthStillness::settle(double t_s, bool force) {
   if (!leaving_) return std::nullopt;
   if (!force && t_s - leaving_->after_t < options_.fit_span_s + 2 * options_.min_still_s) return std::nullopt;
+  // The next stand, if one has begun, is not the motion after this one.
+  if (piece_.duration_s() >= options_.min_still_s)
+    while (!after_.empty() && after_.back().first >= piece_.reports.front().first) after_.pop_back();
   std::optional<StillRun> run;
   if (leaving_->after_motion) run = placed(*leaving_, after_);
   leaving_.reset();
