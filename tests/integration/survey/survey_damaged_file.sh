@@ -10,7 +10,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-skip=(--skip-check gravity --skip-check field --skip-check dip --depth-clock-offset 0)
+skip=(--skip-check gravity --skip-check field --skip-check dip)
 printf 'md_m,inclination_deg,azimuth_deg\n0,10,20\n10,12,22\n20,13,23\n30,14,24\n' > "$work/list.csv"
 "$bin/plumb" survey --stations "$work/list.csv" "${skip[@]}" -o "$work/full.csv" 2> /dev/null
 head -c -25 "$work/full.csv" > "$work/survey.csv"   # the last row cut short
