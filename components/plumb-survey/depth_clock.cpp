@@ -1,6 +1,8 @@
 #include "depth_clock.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <stdexcept>
 
 namespace plumb::survey_component {
 namespace {
@@ -15,7 +17,15 @@ std::uint64_t clock_us(double s) { return static_cast<std::uint64_t>(std::llroun
 
 }  // namespace
 
+void check_depth_clock_options(const DepthClockOptions& o) {
+  if (o.offset_s && !std::isfinite(*o.offset_s))
+    throw std::invalid_argument("--depth-clock-offset: a finite number of seconds, not " + std::to_string(*o.offset_s));
+  if (o.drift_ppm && !(std::abs(*o.drift_ppm) <= 1000))
+    throw std::invalid_argument("--depth-clock-drift-ppm: within -1000..1000 ppm, not " + std::to_string(*o.drift_ppm));
+}
+
 DepthClock::DepthClock(DepthClockOptions options) : options_(options), depth_still_(depth_still_options(options)) {
+  check_depth_clock_options(options_);
   if (options_.offset_s || options_.drift_ppm) {
     clock_sync::ClockEstimate e;
     e.offset_s = options_.offset_s.value_or(0);
@@ -67,9 +77,12 @@ std::vector<survey::DepthReport> DepthClock::take_aligned() {
 }
 
 std::string DepthClock::describe() {
-  if (given_)
-    return "depth clock given: " + clock_sync::describe(given_, 0, 0).substr(std::string("depth clock ").size()) +
-           " (--depth-clock-offset/--depth-clock-drift-ppm: not estimated)";
+  if (given_) {
+    char line[200];
+    std::snprintf(line, sizeof line, "depth clock given: %.6f s %s the sensors', drift %.3f ppm (not estimated)",
+                  std::abs(given_->offset_s), given_->offset_s >= 0 ? "ahead of" : "behind", given_->drift * 1e6);
+    return line;
+  }
   const auto& a = alignment();
   std::string line = clock_sync::describe(a, fit_.depth_runs(), fit_.sensor_runs());
   if (!a) line += ": " + fit_.why_not();

@@ -26,6 +26,9 @@ struct DepthClockOptions {
   std::size_t max_held = 200000;     // depth reports held while unaligned (the oldest dropped, counted)
 };
 
+// Throws std::invalid_argument naming the option when a given offset or drift is not usable.
+void check_depth_clock_options(const DepthClockOptions& options);
+
 class DepthClock {
  public:
   explicit DepthClock(DepthClockOptions options);

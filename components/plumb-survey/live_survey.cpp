@@ -72,6 +72,7 @@ class LiveSurvey {
       sensors_.emplace(transport::make_reader<topics::SensorBatch>(*conn_.participant, o_.sensor_topic,
                                                                    transport::Qos::sensor_stream()));
     note(clock_.describe() + (clock_.given() ? "" : "; matching the stops on " + o_.sensor_topic + " with the depth's"));
+    clock_said_ = clock_.given();  // said once above; an estimate is said when it comes
     t0_ = Clock::now();
     last_attitude_ = Clock::now();
     status_.publish("running", all_counters());
@@ -287,6 +288,10 @@ class LiveSurvey {
 int run_live_survey(const LiveOptions& o) {
   if (o.tool_id.empty()) throw std::invalid_argument("--tool-id is required: it names the tool surveyed and its topic");
   if (o.file.empty()) throw std::invalid_argument("--file is required: the survey is kept there across restarts");
+  DepthClockOptions clock;
+  clock.offset_s = o.depth_clock_offset_s;
+  clock.drift_ppm = o.depth_clock_drift_ppm;
+  check_depth_clock_options(clock);  // before joining the network: a usage error is said at once
   LiveSurvey survey(o);
   return survey.run();
 }

@@ -16,6 +16,11 @@ source "$here/../wait.sh"
 start_work_with_programs
 tool=drilling-survey
 
+# A clock given by hand that is no clock: one line, exit 2, before joining the network.
+expect_usage "offset not finite" "depth-clock-offset: a finite number of seconds, not nan" \
+  "$bin/plumb-survey" --tool-id t --file "$work/bad.csv" --depth-clock-offset nan
+expect_usage "drift not finite" "depth-clock-drift-ppm" "$bin/plumb-survey" --tool-id t --file "$work/bad.csv" --depth-clock-drift-ppm nan
+
 "$bin/plumb-estimator" --transport "$sim_t" --input plumb/sensor/raw --reliable --plugin static --window 5 -q \
   > "$work/estimator.out" 2>&1 &
 pids+=($!)
