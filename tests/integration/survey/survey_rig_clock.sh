@@ -24,6 +24,10 @@ expect_usage "drift not finite" "depth-clock-drift-ppm" "$bin/plumb-survey" --to
 "$bin/plumb-estimator" --transport "$sim_t" --input plumb/sensor/raw --reliable --plugin static --window 5 -q \
   > "$work/estimator.out" 2>&1 &
 pids+=($!)
+# Everything the components report, for the survey's depth clock counters (stopped at the end).
+"$bin/plumb" topic echo plumb/status --transport "$survey_t" --timeout 120 > "$work/status.txt" 2>&1 &
+echo_status=$!
+pids+=($echo_status)
 "$bin/plumb-survey" --transport "$survey_t" --tool-id "$tool" --file "$work/survey.csv" --plugin static \
   --gravity 9.80665 --total-field 50 --dip 60 --sensor-topic plumb/sensor/raw --count 7 --timeout 90 --linger 0 \
   > "$work/survey.out" 2> "$work/survey.err" &
@@ -37,6 +41,7 @@ pids+=($!)
 rc=0
 wait "$survey" || rc=$?
 "$bin/plumb-sim" "${run[@]}" --csv "$work/truth" > /dev/null
+kill "$echo_status" 2>/dev/null || true
 if [ $rc -eq 0 ]; then pass "plumb-survey reached 7 stations"
 else fail "plumb-survey exit $rc: $(cat "$work/survey.err")"; fi
 grep "depth clock" "$work/survey.err" | tail -1
@@ -71,6 +76,20 @@ if said:
         est = float(m.group(1)) * (1 if m.group(2) == "ahead of" else -1)
         true = offset + drift * float(m.group(4))
         check(abs(est - true) < 0.1, f"offset {est:.3f} s (sd {m.group(3)} s) against {true:.3f} s injected: error {abs(est - true) * 1000:.0f} ms")
+sys.exit(0 if ok else 1)
+PY
+
+# plumb/status: the survey's last report says estimated (1), the offset in microseconds and its sigma.
+python3 - "$work/status.txt" "$offset" <<'PY' || fail "depth clock on plumb/status"
+import re, sys
+text = open(sys.argv[1]).read()
+def last(name):
+    found = re.findall(name + r"\D{0,12}?(\d+)", text)
+    return int(found[-1]) if found else None
+state, ahead, sd = last("depth_clock_state"), last("depth_clock_ahead_us"), last("depth_clock_sd_us")
+print(f"plumb/status: depth_clock_state {state}, depth_clock_ahead_us {ahead}, depth_clock_sd_us {sd}")
+ok = state == 1 and ahead is not None and abs(ahead / 1e6 - float(sys.argv[2])) < 0.1 and sd is not None and sd > 0
+print(("ok   - " if ok else "FAIL - ") + "plumb/status states the estimated depth clock and its sigma")
 sys.exit(0 if ok else 1)
 PY
 finish
