@@ -36,6 +36,9 @@ std::string DdsSink::describe() const {
   out << connection_.transport->name() << " topic " << options_.sensor_topic << " ("
       << (options_.reliable ? "reliable" : "best effort") << ")";
   if (truth_) out << ", truth on " << options_.truth_topic;
+  if (options_.rig_clock_offset_s != 0 || options_.rig_clock_drift != 0)
+    out << ", depth on a rig clock " << options_.rig_clock_offset_s << " s ahead, " << options_.rig_clock_drift * 1e6
+        << " ppm fast";
   return out.str();
 }
 
@@ -58,7 +61,10 @@ bool DdsSink::start() {
 void DdsSink::write(const std::vector<Sample>& samples, const std::vector<TruthSample>& truth) {
   // The depth goes first, so that a reader holds it when the batch it belongs to arrives.
   if (!samples.empty() && (samples.back().flags & flags::kHasDepth) != 0) {
-    depth_->write(components::to_depth(samples.back(), options_.tool_id));
+    auto depth = components::to_depth(samples.back(), options_.tool_id);
+    const double t = samples.back().t;
+    depth.stamp_ns = components::seconds_to_ns(t + options_.rig_clock_offset_s + options_.rig_clock_drift * t);
+    depth_->write(depth);
     ++depth_messages_;
   }
   topics::SensorBatch batch;

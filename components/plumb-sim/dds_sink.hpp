@@ -20,6 +20,9 @@ struct DdsSinkOptions {
   double wait_subscribers_s = 5;  // bounded wait for a matched reader before the first batch
   double linger_s = 1;            // after the last batch, for reliable readers to catch up
   std::string tool_id;
+  // The depth's stamps on a rig clock: t + offset + drift t (t the sensors' time).
+  double rig_clock_offset_s = 0;
+  double rig_clock_drift = 0;
 };
 
 class DdsSink final : public Sink {

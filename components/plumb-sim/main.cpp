@@ -44,6 +44,8 @@ struct OutputOptions {
   std::string csv_dir;
   bool loop = false;
   SerialSinkOptions serial;
+  double rig_clock_offset_s = 0;
+  double rig_clock_drift_ppm = 0;
 };
 
 void add_output_options(CLI::App& app, OutputOptions& o) {
@@ -66,6 +68,14 @@ void add_output_options(CLI::App& app, OutputOptions& o) {
                  "(or into PATH if it is a serial device) instead of publishing; use --batch 1 for per-sample timing");
   app.add_option("--serial-baud", o.serial.baud, "baud rate when --serial names a real device")->capture_default_str();
   app.add_option("--serial-mode", o.serial.mode, "--serial protocol: binary or ascii")->capture_default_str();
+  app.add_option("--rig-clock-offset", o.rig_clock_offset_s,
+                 "stamp the published depth on a rig clock this many seconds ahead of the sensors' (negative: "
+                 "behind), as a rig's own clock is: for tests of the depth clock's alignment")
+      ->capture_default_str();
+  app.add_option("--rig-clock-drift-ppm", o.rig_clock_drift_ppm,
+                 "and running this many parts per million fast (negative: slow) from sensor time 0")
+      ->capture_default_str()
+      ->check(CLI::Range(-1000.0, 1000.0));
   app.add_flag("--loop", o.loop,
                "keep simulating past the duration until Ctrl-C (the platform keeps turning; a drilling tool or a "
                "walking foot stays still where its run ended)");
@@ -86,6 +96,8 @@ std::unique_ptr<Sink> make_sink(const OutputOptions& o, const std::string& tool_
   d.wait_subscribers_s = o.wait_subscribers_s;
   d.linger_s = o.linger_s;
   d.tool_id = tool_id;
+  d.rig_clock_offset_s = o.rig_clock_offset_s;
+  d.rig_clock_drift = o.rig_clock_drift_ppm * 1e-6;
   return std::make_unique<DdsSink>(d);
 }
 

@@ -11,6 +11,7 @@
 #include "plumb/survey/detector_report.hpp"
 #include "plumb/transport/topic_names.hpp"
 #include "attitude_continuity.hpp"
+#include "depth_clock.hpp"
 #include "station_message.hpp"
 #include "survey_store.hpp"
 
@@ -59,6 +60,7 @@ class LiveSurvey {
         depth_(transport::make_reader<topics::MeasuredDepth>(*conn_.participant, transport::topic_names::kDepth,
                                                              transport::default_qos_for_topic(transport::topic_names::kDepth))),
         status_(*conn_.participant, kProgram),
+        clock_(clock_options(o)),
         detector_(components::make_detector_options(o.survey), [this](survey::Station st) { on_station(st); }, note) {}
 
   int run() {
@@ -66,30 +68,37 @@ class LiveSurvey {
     republish_resumed();
     std::cerr << kProgram << ": " << conn_.transport->name() << ", tool '" << o_.tool_id << "': " << attitude_topic_
               << " + " << transport::topic_names::kDepth << " -> " << survey_topic_ << ", file " << o_.file << std::endl;
+    if (!clock_.given())
+      sensors_.emplace(transport::make_reader<topics::SensorBatch>(*conn_.participant, o_.sensor_topic,
+                                                                   transport::Qos::sensor_stream()));
+    note(clock_.describe() + (clock_.given() ? "" : "; matching the stops on " + o_.sensor_topic + " with the depth's"));
+    clock_said_ = clock_.given();  // said once above; an estimate is said when it comes
     t0_ = Clock::now();
     last_attitude_ = Clock::now();
-    status_.publish("running", counters());
+    status_.publish("running", all_counters());
     while (!components::g_stop && !enough()) {
       say_what_it_waits_for();
       if (o_.timeout_s > 0 && std::chrono::duration<double>(Clock::now() - t0_).count() > o_.timeout_s) {
-        status_.publish("failed", counters(), "timed out");
+        status_.publish("failed", all_counters(), "timed out");
         components::print_error(kProgram, "timed out with " + std::to_string(result_.rows().size()) + " of " +
                                               std::to_string(o_.count) + " stations");
         return 1;
       }
       attitude_.wait(std::chrono::milliseconds(100));
+      take_sensors();
       take_depths();  // first: a window is decided once the depth after its end is known
       // The run ended (or the estimator stopped) during a stop: its station is due, not held forever.
       if (detector_.stop_open() && Clock::now() - last_attitude_ > std::chrono::seconds(kSilenceFlushS)) detector_.flush();
       take_attitudes();
-      if (status_.due()) status_.publish(refused_ ? "degraded" : "running", counters(), last_error_);
+      if (status_.due()) status_.publish(refused_ ? "degraded" : "running", all_counters(), last_error_);
     }
     // The stop in progress when asked to stop has its station now: its windows are all there are.
     if (!enough()) detector_.flush();
     if (result_.rows().empty()) {
       note(survey::no_station_advice(detector_.counters(), o_.estimator, detector_.still_tolerance_m()));
+      note(clock_.describe());
     }
-    status_.publish("stopping", counters(), last_error_);
+    status_.publish("stopping", all_counters(), last_error_);
     std::cerr << kProgram << ": " << result_.rows().size() << " station(s) (" << store_.resumed() << " resumed), "
               << result_.failed_qc() << " failed QC, " << refused_ << " refused" << std::endl;
     if (enough()) components::sleep_while_running(o_.linger_s);
@@ -110,9 +119,22 @@ class LiveSurvey {
     }
   }
 
+  static DepthClockOptions clock_options(const LiveOptions& o) {
+    DepthClockOptions c;
+    c.offset_s = o.depth_clock_offset_s;
+    c.drift_ppm = o.depth_clock_drift_ppm;
+    if (o.survey.still_tolerance_m > 0) c.still_tolerance_m = o.survey.still_tolerance_m;
+    return c;
+  }
+
   void on_station(survey::Station s) {
     if (o_.survey.depth_sd_m >= 0) s.md_sd_m = o_.survey.depth_sd_m;
     try {
+      // The file says, before the rows that used it, how the depth's clock was brought to the sensors'.
+      if (const std::string line = clock_.describe(); line != clock_in_file_) {
+        store_.comment(line);
+        clock_in_file_ = line;
+      }
       const survey::SurveyRow& row = result_.add(s);
       store_.append(row);  // on disk (fsync'ed) before anyone is told
       writer_.write(to_topic(row));
@@ -143,6 +165,12 @@ class LiveSurvey {
                                    {"attitude_gaps", continuity_.gaps()},
                                    {"attitude_windows_missing", continuity_.windows_missing()},
                                    {"readers", writer_.matched_readers()}};
+  }
+
+  components::CounterList all_counters() {
+    auto list = counters();
+    for (auto& c : clock_.counters()) list.push_back(c);
+    return list;
   }
 
   bool enough() const { return o_.count > 0 && result_.rows().size() >= static_cast<std::size_t>(o_.count); }
@@ -185,7 +213,33 @@ class LiveSurvey {
         continue;
       }
       ++depth_messages_;
-      detector_.add_depth(from_topic(d));
+      clock_.add_depth(from_topic(d));
+    }
+    for (const auto& r : clock_.take_aligned()) {
+      // A refined alignment must not send the detector back in time.
+      if (r.t_s <= last_aligned_t_) continue;
+      last_aligned_t_ = r.t_s;
+      detector_.add_depth(r);
+    }
+    say_clock();
+  }
+
+  // The alignment, said when it first comes and when another stop refines it.
+  void say_clock() {
+    const auto& a = clock_.alignment();
+    const std::size_t stops = a ? a->matched : 0;
+    if (a.has_value() == clock_said_ && stops == clock_stops_said_) return;
+    clock_said_ = a.has_value();
+    clock_stops_said_ = stops;
+    note(clock_.describe());
+  }
+
+  void take_sensors() {
+    if (!sensors_) return;
+    topics::SensorBatch batch;
+    while (sensors_->take(batch)) {
+      if (!batch.tool_id.empty() && batch.tool_id != o_.tool_id) continue;
+      for (const auto& s : batch.samples) clock_.add_sensor(components::from_topic(s));
     }
   }
 
@@ -213,6 +267,12 @@ class LiveSurvey {
   transport::Reader<topics::Attitude> attitude_;
   transport::Reader<topics::MeasuredDepth> depth_;
   components::StatusReporter status_;
+  DepthClock clock_;
+  std::optional<transport::Reader<topics::SensorBatch>> sensors_;
+  std::string clock_in_file_;
+  double last_aligned_t_ = -1e300;
+  bool clock_said_ = false;
+  std::size_t clock_stops_said_ = 0;
   survey::StationDetector detector_;
   AttitudeContinuity continuity_;
   std::uint64_t refused_ = 0, depth_messages_ = 0, other_tool_ = 0;
@@ -228,6 +288,10 @@ class LiveSurvey {
 int run_live_survey(const LiveOptions& o) {
   if (o.tool_id.empty()) throw std::invalid_argument("--tool-id is required: it names the tool surveyed and its topic");
   if (o.file.empty()) throw std::invalid_argument("--file is required: the survey is kept there across restarts");
+  DepthClockOptions clock;
+  clock.offset_s = o.depth_clock_offset_s;
+  clock.drift_ppm = o.depth_clock_drift_ppm;
+  check_depth_clock_options(clock);  // before joining the network: a usage error is said at once
   LiveSurvey survey(o);
   return survey.run();
 }

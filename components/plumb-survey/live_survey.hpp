@@ -2,6 +2,7 @@
 // by minimum curvature, written to the survey file (fsync'ed) and only then published.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "plumb/components/cli.hpp"
@@ -20,6 +21,11 @@ struct LiveOptions {
   double timeout_s = 0;              // fail if --count is not reached in time
   double linger_s = 1;
   bool quiet = false;
+  // The depth's clock against the sensors' (docs/wits.md, "Clocks"): given, or estimated from the
+  // stops seen on the depth and on sensor_topic.
+  std::optional<double> depth_clock_offset_s;
+  std::optional<double> depth_clock_drift_ppm;
+  std::string sensor_topic = "plumb/sensor/calibrated";
 };
 
 int run_live_survey(const LiveOptions& options);

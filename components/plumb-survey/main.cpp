@@ -22,6 +22,15 @@ int main(int argc, char** argv) {
   app.add_option("--timeout", o.timeout_s, "exit with an error if --count is not reached within this many seconds");
   app.add_option("--linger", o.linger_s, "seconds to stay after --count so that readers get the last station")->capture_default_str();
   app.add_flag("-q,--quiet", o.quiet, "do not print each station");
+  app.add_option("--depth-clock-offset", o.depth_clock_offset_s,
+                 "seconds the depth's stamps run ahead of the sensors' (negative: behind); given, the offset is not "
+                 "estimated (0: the depth is on the sensors' clock, as plumb-sim's)");
+  app.add_option("--depth-clock-drift-ppm", o.depth_clock_drift_ppm,
+                 "parts per million the depth's clock runs fast (negative: slow); given, nothing is estimated")
+      ->check(CLI::Range(-1000.0, 1000.0));
+  app.add_option("--sensor-topic", o.sensor_topic,
+                 "sensor topic whose stillness the depth's stops are matched with to estimate the depth clock")
+      ->capture_default_str();
   if (const int status = components::parse_command_line(app, argc, argv); status >= 0) return status;
   try {
     return survey_component::run_live_survey(o);

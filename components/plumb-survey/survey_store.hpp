@@ -18,6 +18,7 @@ class SurveyStore {
   // Throws std::runtime_error when the file exists but is not a survey file (never overwritten).
   SurveyStore(const std::string& path, survey::Survey& survey, const std::function<void(const std::string&)>& note);
   void append(const survey::SurveyRow& row) { appender_->append(row); }
+  void comment(const std::string& text) { appender_->append_comment(text); }
   std::size_t resumed() const { return resumed_; }
 
  private:

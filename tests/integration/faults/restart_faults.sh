@@ -36,7 +36,7 @@ start() {  # start COMPONENT: (re)starts it in the background, its log appended 
         >> "$1.log" 2>&1 & ;;
     plumb-survey)
       "$bin/plumb-survey" --tool-id board --estimator integral --file survey.txt --gravity 9.80665 --total-field 48.4 \
-        --dip 45.5 -q >> "$1.log" 2>&1 & ;;
+        --dip 45.5 --depth-clock-offset 0 -q >> "$1.log" 2>&1 & ;;
   esac
   pid[$1]=$!
   pids+=($!)

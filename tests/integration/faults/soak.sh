@@ -41,7 +41,7 @@ pid[plumb-calibrate]=$!
   --plugin compensated --window 1 -q > estimator.log 2>&1 &
 pid[plumb-estimator]=$!
 "$bin/plumb-survey" --transport $t_survey --tool-id board --estimator integral --file survey.txt --gravity 9.80665 \
-  --total-field 48.4 --dip 45.5 -q > survey.log 2>&1 &
+  --total-field 48.4 --dip 45.5 --depth-clock-offset 0 -q > survey.log 2>&1 &
 pid[plumb-survey]=$!
 "$bin/plumb-bridge" --transport $t_bridge --device ./board --baud 921600 --reliable --backoff-min 0.05 \
   --backoff-max 0.2 > bridge.log 2>&1 &

@@ -16,7 +16,7 @@ source "$here/../wait.sh"
 start_work_with_programs
 tool=drilling-survey
 survey_args=(--transport "$survey_t" --tool-id "$tool" --file "$work/survey.csv" --plugin static
-             --gravity 9.80665 --total-field 50 --dip 60)
+             --gravity 9.80665 --total-field 50 --dip 60 --depth-clock-offset 0)
 
 "$bin/plumb-estimator" --transport "$sim_t" --input plumb/sensor/raw --reliable --plugin static --window 5 -q \
   > "$work/estimator.out" 2>&1 &

@@ -13,7 +13,7 @@ source "$here/../wait.sh"
 start_work_with_programs
 
 "$bin/plumb-survey" --tool-id t1 --plugin static --file "$work/survey.csv" --gravity 9.80665 --total-field 50 --dip 60 \
-  > "$work/out" 2> "$work/err" &
+  --depth-clock-offset 0 > "$work/out" 2> "$work/err" &
 pids+=($!)
 wait_for "$work/err" "file .*survey.csv" 20 || { cat "$work/err"; exit 1; }
 s=1000000000

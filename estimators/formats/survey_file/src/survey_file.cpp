@@ -269,4 +269,12 @@ void SurveyAppender::append(const SurveyRow& row) {
   if (::fsync(fd_) != 0) throw_errno("cannot sync survey file", path_);
 }
 
+void SurveyAppender::append_comment(const std::string& text) {
+  std::string line = "# " + text;
+  for (char& c : line)
+    if (c == '\n' || c == '\r') c = ' ';
+  write_all(fd_, line + "\n", path_);
+  if (::fsync(fd_) != 0) throw_errno("cannot sync survey file", path_);
+}
+
 }  // namespace plumb::survey

@@ -47,6 +47,9 @@ class SurveyAppender {
   SurveyAppender(const SurveyAppender&) = delete;
   SurveyAppender& operator=(const SurveyAppender&) = delete;
   void append(const SurveyRow& row);
+  // A `# ` comment line (readers skip it), fsync'ed like a row: what the file's rows depend on that
+  // was learnt after its header (the depth clock's alignment).
+  void append_comment(const std::string& text);
 
  private:
   std::string path_;
