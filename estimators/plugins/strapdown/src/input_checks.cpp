@@ -22,6 +22,8 @@ void InputChecks::reset(const NavigatorConfig& config, Counters& counters) {
   shift_queue_.clear();
   gyro_history_.clear();
   dt_nominal_ = 0;
+  last_seq_ = 0;
+  seq_counts_ = false;
   saw_gyro_ = saw_no_gyro_ = false;
 }
 
@@ -40,6 +42,12 @@ InputChecks::Verdict InputChecks::accept(const Sample& s, InputReading& in, Coun
   }
   if (last_t_ && s.t == *last_t_) {
     count(counters, "repeated_time");
+    verdict.repeated = verdict.same_stamp = true;
+    return verdict;
+  }
+  if (seq_counts_ && s.seq == last_seq_ && s.f == last_f_ && s.w == last_w_) {
+    count(counters, "repeated_samples");
+    verdict.repeated = true;
     return verdict;
   }
   if ((s.flags & flags::kOutOfRange) != 0) {
@@ -84,14 +92,22 @@ InputChecks::Verdict InputChecks::accept(const Sample& s, InputReading& in, Coun
   if ((s.flags & flags::kHasDepth) != 0 && std::isfinite(s.depth_m)) in.depth = s.depth_m;
   if (last_t_) {
     const double dt = s.t - *last_t_;
+    const bool lost = dt_nominal_ > 0 && dt > kDropoutFactor * dt_nominal_;
+    if (lost) verdict.lost_dt = dt;
     if (dt > config_.max_gap_s) {
       count(counters, "gaps");
       verdict.gap = true;
-    } else {
+    } else if (!lost) {
+      // (Samples lost do not make the interval longer.)
       dt_nominal_ = dt_nominal_ > 0 ? 0.99 * dt_nominal_ + 0.01 * dt : dt;
     }
   }
   last_t_ = s.t;
+  // (A stream whose samples all carry the same seq, 0 say, does not count them.)
+  if (last_t_ && s.seq != last_seq_) seq_counts_ = true;
+  last_seq_ = s.seq;
+  last_f_ = s.f;
+  last_w_ = s.w;
   ++*accepted_counter_;
   verdict.navigable = true;
   return verdict;

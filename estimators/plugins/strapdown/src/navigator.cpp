@@ -17,7 +17,7 @@ void Navigator::reset() {
   counters_.clear();
   for (const char* name :
        {"samples", "accepted", "non_finite", "time_backwards", "repeated_time", "no_gyro", "gyro_saturated",
-        "accel_saturated", "mag_unusable", "out_of_range", "gaps", "accel_in_g", "still_periods",
+        "accel_saturated", "mag_unusable", "out_of_range", "gaps", "dropouts", "missing_samples", "repeated_samples", "accel_in_g", "still_periods",
         "zero_velocity_updates", "zero_rate_updates", "tilt_updates", "azimuth_updates", "disturbed_field",
         "lateral_velocity_updates", "axial_acceleration_updates", "depth_updates", "tally_updates", "stops_not_connections", "rows", "invalid_rows"}) {
     counters_[name] = 0;
@@ -35,11 +35,13 @@ void Navigator::reset() {
   rows_.reset(config_);
   lag_.reset(config_.stop_lag_s);
   unseen_.reset(config_);
+  faults_.reset();
 }
 
 std::vector<std::string> Navigator::take_notices() {
   std::vector<std::string> notices = watch_.take_notices();
   for (std::string& n : unseen_.take_notices()) notices.push_back(std::move(n));
+  for (std::string& n : faults_.take_notices()) notices.push_back(std::move(n));
   return notices;
 }
 
@@ -55,6 +57,8 @@ void Navigator::push(const Sample& s, std::vector<Estimate>& out) {
     rows_.note_gap(s.t);
     watch_.forget();
   }
+  if (verdict.repeated) faults_.repeat(s.t, verdict.same_stamp);
+  if (verdict.lost_dt > 0) faults_.lost(s.t, verdict.lost_dt, checks_.dt_nominal(), counters_);
   if (!verdict.navigable) {
     if (!aligned_ && checks_.last_t()) emit(*checks_.last_t(), out);
     return;
@@ -90,6 +94,13 @@ void Navigator::process(const Input& in, std::vector<Estimate>& out) {
 
 void Navigator::navigate(const Input& in, const StillnessState& still, std::vector<Estimate>& out) {
   rows_.add_reading(in);
+  // Samples lost before this one: the step bridges them, and the epoch's noise says what they cost.
+  const double step_dt = in.t - prev_->t, dt_nominal = checks_.dt_nominal();
+  if (dt_nominal > 0 && step_dt > kDropoutFactor * dt_nominal) {
+    faults_.bridge(step_dt, dt_nominal);
+    rows_.note_gap(in.t);
+  }
+  faults_.observe(in, step_dt, dt_nominal);
   filter_.step(*prev_, in, prev2_ ? &*prev2_ : nullptr, config_.samples_are_means, checks_.dt_nominal());
   if (in.depth) {
     stops_.take_depth(in.t, *in.depth, prev_->depth.has_value(), filter_);
@@ -166,7 +177,9 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   const UnseenMotionNoise unseen =
       unseen_.at_epoch(filter_.state().q.toRotationMatrix().col(2), still_state_, in.t, in.t - last_epoch_t_);
   const FilterState::Prediction prediction =
-      filter_.predict(stops_.process_noise(filter_.noise(), still_state_, filter_.drilling_tool()), unseen);
+      filter_.predict(faults_.widen(stops_.process_noise(filter_.noise(), still_state_, filter_.drilling_tool()),
+                                    in.t - last_epoch_t_),
+                      unseen);
   last_epoch_t_ = in.t;
   stops_.at_epoch(filter_, prediction, still_state_, in.t, checks_.dt_nominal(), watch_.depth_sd(), watch_.depth_tolerance(),
                   aligner_.use_mag(), aligner_.field(), counters_);

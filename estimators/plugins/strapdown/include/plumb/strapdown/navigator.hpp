@@ -28,6 +28,7 @@
 #include "plumb/strapdown/stillness_lag.hpp"
 #include "plumb/strapdown/stillness_watch.hpp"
 #include "plumb/strapdown/stop_updates.hpp"
+#include "plumb/strapdown/stream_faults.hpp"
 #include "plumb/strapdown/unseen_motion.hpp"
 
 namespace plumb::strapdown {
@@ -94,6 +95,7 @@ class Navigator {
   OutputRows rows_;
   StillnessLag lag_;
   UnseenMotion unseen_;
+  StreamFaults faults_;
 };
 
 }  // namespace plumb::strapdown

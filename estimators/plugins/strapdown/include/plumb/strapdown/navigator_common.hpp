@@ -42,6 +42,9 @@ inline constexpr double kMinSigmaGyro = 1e-6;     // rad/s per sample
 inline constexpr double kMinMeanSdGyro = 1e-9;    // rad/s, a zero-rate update's mean
 inline constexpr double kMinMeanSdAccel = 1e-6;   // m/s^2, a tilt update's mean
 
+// A step longer than this many nominal intervals has lost samples (one lost sample doubles it).
+inline constexpr double kDropoutFactor = 1.5;
+
 // A rig reports depth about once a second: a held value is at most this old while the tool moves (s).
 inline constexpr double kHeldDepthAgeS = 2.0;
 
