@@ -9,6 +9,8 @@ namespace {
 
 // Magnetometer readings below this are "no magnetometer" (a logger without one writes zeros).
 constexpr double kNoFieldUT = 1e-3;
+// A reading this close to the range sits at it (the last code of a converter is one step short).
+constexpr double kAtRange = 0.999;
 
 }  // namespace
 
@@ -63,6 +65,14 @@ InputChecks::Verdict InputChecks::accept(const Sample& s, InputReading& in, Coun
     return verdict;
   }
   saw_gyro_ = true;
+  // The range on any axis, flagged or not (a file carries no flags): the part beyond is unknown.
+  for (int i = 0; i < 3; ++i) {
+    if (std::abs(s.f[i]) >= kAtRange * config_.accel_range) in.f_clip[i] = s.f[i] > 0 ? 1.0 : -1.0;
+    if (std::abs(s.w[i]) >= kAtRange * config_.gyro_range) in.w_clip[i] = s.w[i] > 0 ? 1.0 : -1.0;
+  }
+  in.clipped = !in.f_clip.isZero(0.0) || !in.w_clip.isZero(0.0);
+  if (!in.f_clip.isZero(0.0)) count(counters, "accel_clipped");
+  if (!in.w_clip.isZero(0.0)) count(counters, "gyro_clipped");
   in.w = s.w;
   if ((s.flags & flags::kGyroSaturated) != 0) {
     count(counters, "gyro_saturated");

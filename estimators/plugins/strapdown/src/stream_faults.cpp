@@ -10,13 +10,19 @@ namespace {
 // The spread's memory: long enough to hold a few seconds of drilling, short enough to follow a
 // change from still to turning.
 constexpr double kSpreadMemoryS = 2.0;
+// The force's mean before a gap: a tenth of a second takes out a bit's vibration (tens of hertz)
+// and keeps a turning tool's gravity (its lateral part loses 0.4 % at 30 rpm).
+constexpr double kForceMemoryS = 0.1;
 
 }  // namespace
 
 void StreamFaults::reset() {
   recent_ = 0;
+  f_mean_set_ = false;
   spread_w2_ = spread_f2_ = 0;
   pending_att_ = pending_vel_ = 0;
+  pending_turn_.setZero();
+  pending_force_.setZero();
   gap_said_ = repeat_said_ = false;
   notices_.clear();
 }
@@ -32,6 +38,12 @@ void StreamFaults::observe(const InputReading& in, double dt, double dt_nominal)
     spread_w2_ += a * ((in.w - 2.0 * r1_.w + r0_.w).squaredNorm() / 18.0 - spread_w2_);
     spread_f2_ += a * ((in.f - 2.0 * r1_.f + r0_.f).squaredNorm() / 18.0 - spread_f2_);
   }
+  if (f_mean_set_ && even) {
+    f_mean_ += std::min(1.0, dt / kForceMemoryS) * (in.f - f_mean_);
+  } else {
+    f_mean_ = in.f;
+    f_mean_set_ = true;
+  }
   r0_ = r1_;
   r1_ = Recent{in.t, in.w, in.f};
   recent_ = std::min(recent_ + 1, 2);
@@ -41,11 +53,32 @@ void StreamFaults::observe(const InputReading& in, double dt, double dt_nominal)
 // dt_nominal: over a gap of T they add spread^2 dt_nominal T to the attitude's (rate) and the
 // velocity's (specific force) variance per axis. The filter's white noise already covers the
 // sensors' own noise over T; this is the motion beyond it the readings would have shown.
-void StreamFaults::bridge(double dt, double dt_nominal) {
-  const double missing_s = dt - dt_nominal;
+// Across a gap of T the mechanization takes the rate and the force as lines between the readings
+// on either side. Where they changed (a spin that speeds up, a slide that starts), the truth went
+// from one to the other by a path the readings do not show: a monotone change keeps the integral
+// within |change| T / 2 of the line's, taken as uniform (rms over sqrt(3)) along the change. The
+// attitude error grows through the gap, and tilts the specific force into the velocity on the way:
+// dv = -[f_n x] dtheta T / 2, correlated with it.
+void StreamFaults::bridge(const InputReading& prev, const InputReading& in, double dt_nominal,
+                          const Eigen::Matrix3d& c_bn) {
+  const double dt = in.t - prev.t, missing_s = dt - dt_nominal;
   pending_att_ += spread_w2_ * dt_nominal * missing_s;
   pending_vel_ += spread_f2_ * dt_nominal * missing_s;
+  constexpr double kHalfOverRoot3 = 0.28867513459481287;  // 1 / (2 sqrt(3))
+  const Eigen::Vector3d dtheta = (kHalfOverRoot3 * dt) * (c_bn * (in.w - prev.w));
+  const Eigen::Vector3d f_n = c_bn * in.f;
+  pending_turn_.head<3>() += dtheta;
+  pending_turn_.tail<3>() += (-0.5 * dt) * f_n.cross(dtheta);
+  const Eigen::Vector3d dv = (kHalfOverRoot3 * dt) * (c_bn * (in.f - prev.f));
+  pending_force_ += dv * dv.transpose();
   recent_ = 0;
+}
+
+void StreamFaults::add_to(UnseenMotionNoise& noise) {
+  noise.turn += pending_turn_;
+  noise.velocity += pending_force_;
+  pending_turn_.setZero();
+  pending_force_.setZero();
 }
 
 void StreamFaults::lost(double t, double dt, double dt_nominal, Counters& counters) {

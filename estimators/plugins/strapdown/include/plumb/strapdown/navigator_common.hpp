@@ -22,6 +22,9 @@ struct InputReading {
   std::optional<double> depth;
   bool gyro_bad = false;  // saturated: the rate is the last good one
   bool accel_bad = false;
+  // Axes read at or beyond the sensor's range: +1 or -1 the side clipped, 0 within it.
+  Eigen::Vector3d f_clip = Eigen::Vector3d::Zero(), w_clip = Eigen::Vector3d::Zero();
+  bool clipped = false;
 };
 
 // The reference field (|B|, dip) the detector and the magnetic updates are gated by: given, or
@@ -44,6 +47,9 @@ inline constexpr double kMinMeanSdAccel = 1e-6;   // m/s^2, a tilt update's mean
 
 // A step longer than this many nominal intervals has lost samples (one lost sample doubles it).
 inline constexpr double kDropoutFactor = 1.5;
+
+// A still tool stays still across a gap up to this long (s): a logger's dropout, not a new run.
+inline constexpr double kStillAcrossGapS = 5.0;
 
 // A rig reports depth about once a second: a held value is at most this old while the tool moves (s).
 inline constexpr double kHeldDepthAgeS = 2.0;
