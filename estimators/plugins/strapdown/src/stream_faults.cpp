@@ -62,8 +62,10 @@ void StreamFaults::observe(const InputReading& in, double dt, double dt_nominal)
 void StreamFaults::bridge(const InputReading& prev, const InputReading& in, double dt_nominal,
                           const Eigen::Matrix3d& c_bn) {
   const double dt = in.t - prev.t, missing_s = dt - dt_nominal;
+  // The force's share goes to the velocity at the gap's end (below), not as a random walk through
+  // the epoch: a random walk would tie it to the position, and a lateral-velocity update after the
+  // gap would move the position by metres for a velocity error the step made at its end.
   pending_att_ += spread_w2_ * dt_nominal * missing_s;
-  pending_vel_ += spread_f2_ * dt_nominal * missing_s;
   constexpr double kHalfOverRoot3 = 0.28867513459481287;  // 1 / (2 sqrt(3))
   const Eigen::Vector3d dtheta = (kHalfOverRoot3 * dt) * (c_bn * (in.w - prev.w));
   const Eigen::Vector3d f_n = c_bn * in.f;
@@ -71,6 +73,7 @@ void StreamFaults::bridge(const InputReading& prev, const InputReading& in, doub
   pending_turn_.tail<3>() += (-0.5 * dt) * f_n.cross(dtheta);
   const Eigen::Vector3d dv = (kHalfOverRoot3 * dt) * (c_bn * (in.f - prev.f));
   pending_force_ += dv * dv.transpose();
+  pending_force_.diagonal().array() += spread_f2_ * dt_nominal * missing_s;
   recent_ = 0;
 }
 
