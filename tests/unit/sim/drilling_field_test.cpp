@@ -97,3 +97,38 @@ TEST(DrillingField, StickSlipPastTheGyroRangeClipsIt) {
 
 }  // namespace
 }  // namespace plumb::sim
+
+namespace plumb::sim {
+namespace {
+
+// Heave on the measured depth only: the depth swings by the amplitude at the period about the
+// truth, the IMU's samples and the truth are those of the run without it.
+TEST(DrillingField, HeaveIsOnTheDepthOnly) {
+  DrillingScenario calm = DrillingScenario::reference(ImuGrade::mems(), 100, 6);
+  DrillingScenario heaving = calm;
+  heaving.depth.heave_amplitude_m = 0.3;
+  heaving.depth.heave_period_s = 12;
+  DrillingSimulator a(calm), b(heaving);
+  double lo = 1e9, hi = -1e9;
+  std::size_t zero_crossings = 0;
+  double last = 0;
+  while (!a.done()) {
+    TruthSample ta, tb;
+    const Sample sa = a.next(&ta), sb = b.next(&tb);
+    ASSERT_EQ(sa.f, sb.f);
+    ASSERT_EQ(sa.w, sb.w);
+    ASSERT_EQ(ta.north_m, tb.north_m);
+    const double residual = sb.depth_m - sa.depth_m;
+    lo = std::min(lo, residual);
+    hi = std::max(hi, residual);
+    if (sa.t > 0 && (residual > 0) != (last > 0)) ++zero_crossings;
+    last = residual;
+  }
+  EXPECT_NEAR(hi, 0.3, 1e-3);
+  EXPECT_NEAR(lo, -0.3, 1e-3);
+  // Two crossings per 12 s period over the 960 s run.
+  EXPECT_NEAR(static_cast<double>(zero_crossings), 2 * 960 / 12.0, 2);
+}
+
+}  // namespace
+}  // namespace plumb::sim

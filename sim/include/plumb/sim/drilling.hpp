@@ -85,6 +85,10 @@ struct DepthModel {
   bool present = true;           // Sample::depth_m with flags::kHasDepth
   double sigma_m = 0;            // white noise per sample
   double quantum_m = 0;          // rounding step of the rig's reading (after the noise); 0: none
+  // A floating rig's heave compensator leaves a residual on the measured depth only (the tool does
+  // not move with it): a swell of this amplitude and period, its phase drawn from the seed. 0: none.
+  double heave_amplitude_m = 0;
+  double heave_period_s = 10;
 };
 
 struct DrillingScenario {
