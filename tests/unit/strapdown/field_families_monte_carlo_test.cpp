@@ -235,5 +235,28 @@ TEST(StrapdownFieldFamilies, HeavingRig) {
   }
 }
 
+// A logger's stamps that jitter by 1 ms (at 100 Hz, 14 % of the interval between two stamps) are not
+// lost samples; the logger's dropouts through the same jitter still are, every one.
+TEST(StrapdownFieldFamilies, StampJitterIsNoDropout) {
+  auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 100, 8);
+  sim::DrillingSimulator simulator(scenario);
+  std::vector<Sample> samples = simulator.run();
+  sim::LoggerFaults faults;
+  faults.dropouts_per_minute = 1.5;
+  sim::LoggerFaultLog log;
+  const std::vector<Sample> dropped = sim::through_logger(samples, faults, 100, 8, &log);
+  for (const bool with_dropouts : {false, true}) {
+    std::vector<Sample> fed = with_dropouts ? dropped : samples;
+    std::mt19937_64 rng(8);
+    std::normal_distribution<double> jitter(0.0, 1e-3);
+    for (Sample& x : fed) x.t += jitter(rng);
+    Navigator nav(parse_parameters(parameters_for(scenario)));
+    std::vector<Estimate> rows;
+    for (const Sample& x : fed) nav.push(x, rows);
+    nav.flush(rows);
+    EXPECT_EQ(nav.counters().at("dropouts"), with_dropouts ? log.gaps.size() : 0u);
+  }
+}
+
 }  // namespace
 }  // namespace plumb::strapdown::test

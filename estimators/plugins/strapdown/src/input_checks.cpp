@@ -24,6 +24,7 @@ void InputChecks::reset(const NavigatorConfig& config, Counters& counters) {
   shift_queue_.clear();
   gyro_history_.clear();
   dt_nominal_ = 0;
+  dt_jitter_ = 0;
   last_seq_ = 0;
   seq_counts_ = false;
   saw_gyro_ = saw_no_gyro_ = false;
@@ -102,13 +103,14 @@ InputChecks::Verdict InputChecks::accept(const Sample& s, InputReading& in, Coun
   if ((s.flags & flags::kHasDepth) != 0 && std::isfinite(s.depth_m)) in.depth = s.depth_m;
   if (last_t_) {
     const double dt = s.t - *last_t_;
-    const bool lost = dt_nominal_ > 0 && dt > kDropoutFactor * dt_nominal_;
+    const bool lost = lost_samples(dt);
     if (lost) verdict.lost_dt = dt;
     if (dt > config_.max_gap_s) {
       count(counters, "gaps");
       verdict.gap = true;
     } else if (!lost) {
       // (Samples lost do not make the interval longer.)
+      if (dt_nominal_ > 0) dt_jitter_ += 0.01 * (1.25 * std::abs(dt - dt_nominal_) - dt_jitter_);
       dt_nominal_ = dt_nominal_ > 0 ? 0.99 * dt_nominal_ + 0.01 * dt : dt;
     }
   }

@@ -103,7 +103,7 @@ void Navigator::navigate(const Input& in, const StillnessState& still, std::vect
   rows_.add_reading(in);
   // Samples lost before this one: the step bridges them, and the epoch's noise says what they cost.
   const double step_dt = in.t - prev_->t, dt_nominal = checks_.dt_nominal();
-  const bool gap = dt_nominal > 0 && step_dt > kDropoutFactor * dt_nominal;
+  const bool gap = checks_.lost_samples(step_dt);
   if (gap) rows_.note_gap(in.t);
   // (A drilling tool's. A foot's gaps, a few samples within a stride, are bridged as before: with
   // the allowance the short walk of tests/data/walks ended 0.176 m off instead of 0.138 m.)

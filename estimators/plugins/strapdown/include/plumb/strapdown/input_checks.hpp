@@ -39,6 +39,11 @@ class InputChecks {
 
   std::optional<double> last_t() const { return last_t_; }
   double dt_nominal() const { return dt_nominal_; }
+  // A step this long lost samples: beyond kDropoutFactor nominal intervals and beyond what the
+  // stamps' own jitter makes of one interval.
+  bool lost_samples(double dt) const {
+    return dt_nominal_ > 0 && dt > kDropoutFactor * dt_nominal_ && dt - dt_nominal_ > kJitterSigmas * dt_jitter_;
+  }
   // Only samples without gyros so far: rows say strapdown needs them.
   bool no_gyro_at_all() const { return saw_no_gyro_ && !saw_gyro_; }
 
@@ -57,6 +62,7 @@ class InputChecks {
   std::deque<InputReading> shift_queue_;
   std::deque<std::pair<double, Eigen::Vector3d>> gyro_history_;
   double dt_nominal_ = 0;
+  double dt_jitter_ = 0;  // the intervals' spread about the nominal (mean absolute deviation x 1.25)
   bool saw_gyro_ = false, saw_no_gyro_ = false;
 };
 

@@ -47,6 +47,9 @@ inline constexpr double kMinMeanSdAccel = 1e-6;   // m/s^2, a tilt update's mean
 
 // A step longer than this many nominal intervals has lost samples (one lost sample doubles it).
 inline constexpr double kDropoutFactor = 1.5;
+// ... and longer than the nominal by this many times the intervals' own spread (a logger's clock
+// that jitters by a millisecond at 400 Hz spreads them by 35 %).
+inline constexpr double kJitterSigmas = 5.0;
 
 // A still tool stays still across a gap up to this long (s): a logger's dropout, not a new run.
 inline constexpr double kStillAcrossGapS = 5.0;
