@@ -68,12 +68,11 @@ InputChecks::Verdict InputChecks::accept(const Sample& s, InputReading& in, Coun
   saw_gyro_ = true;
   // The range on any axis, flagged or not (a file carries no flags): the part beyond is unknown.
   for (int i = 0; i < 3; ++i) {
-    if (std::abs(s.f[i]) >= kAtRange * config_.accel_range) in.f_clip[i] = s.f[i] > 0 ? 1.0 : -1.0;
-    if (std::abs(s.w[i]) >= kAtRange * config_.gyro_range) in.w_clip[i] = s.w[i] > 0 ? 1.0 : -1.0;
+    if (std::abs(s.f[i]) >= kAtRange * config_.accel_range) in.clipped |= static_cast<std::uint8_t>(1u << i);
+    if (std::abs(s.w[i]) >= kAtRange * config_.gyro_range) in.clipped |= static_cast<std::uint8_t>(8u << i);
   }
-  in.clipped = !in.f_clip.isZero(0.0) || !in.w_clip.isZero(0.0);
-  if (!in.f_clip.isZero(0.0)) count(counters, "accel_clipped");
-  if (!in.w_clip.isZero(0.0)) count(counters, "gyro_clipped");
+  if ((in.clipped & 7u) != 0) count(counters, "accel_clipped");
+  if ((in.clipped & 56u) != 0) count(counters, "gyro_clipped");
   in.w = s.w;
   if ((s.flags & flags::kGyroSaturated) != 0) {
     count(counters, "gyro_saturated");

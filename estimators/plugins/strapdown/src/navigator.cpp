@@ -118,7 +118,7 @@ void Navigator::navigate(const Input& in, const StillnessState& still, std::vect
     filter_.step(*prev_, in, prev2_ ? &*prev2_ : nullptr, config_.samples_are_means, checks_.dt_nominal());
   }
   faults_.observe(in, step_dt, dt_nominal);
-  if (in.clipped) ranges_.integrate(in, step_dt, filter_.state().q.toRotationMatrix());
+  if (in.clipped != 0) ranges_.integrate(in, step_dt, filter_.state().q.toRotationMatrix());
   if (in.depth) {
     stops_.take_depth(in.t, *in.depth, prev_->depth.has_value(), filter_);
     unseen_.note_depth(in.t);

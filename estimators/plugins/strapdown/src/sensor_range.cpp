@@ -24,8 +24,8 @@ void SensorRange::reset(const NavigatorConfig& config) {
 }
 
 void SensorRange::seen(const InputReading& in) {
-  if (!in.clipped) return;
-  if (!accel_said_ && !in.f_clip.isZero(0.0)) {
+  if (in.clipped == 0) return;
+  if (!accel_said_ && (in.clipped & 7u) != 0) {
     accel_said_ = true;
     notices_.push_back(format("accelerometer clipped at its range (%.1f g) at t = %.3f s", config_.accel_range / 9.80665,
                               in.t) +
@@ -33,7 +33,7 @@ void SensorRange::seen(const InputReading& in) {
                        "velocity's sigma by up to that less the range; the rows that hold one say so (counter "
                        "accel_clipped)");
   }
-  if (!gyro_said_ && !in.w_clip.isZero(0.0)) {
+  if (!gyro_said_ && (in.clipped & 56u) != 0) {
     gyro_said_ = true;
     notices_.push_back(format("gyro clipped at its range (%.0f deg/s) at t = %.3f s", config_.gyro_range * kRadToDeg,
                               in.t) +
@@ -46,16 +46,19 @@ void SensorRange::seen(const InputReading& in) {
 // A held reading (flagged saturated: the last good value stands in) may miss the whole plausible
 // value, a clipped one only what lies beyond the range.
 void SensorRange::integrate(const InputReading& in, double dt, const Eigen::Matrix3d& c_bn) {
-  if (!in.clipped || !(dt > 0)) return;
-  if (!in.f_clip.isZero(0.0)) {
+  if (in.clipped == 0 || !(dt > 0)) return;
+  const auto axes = [](unsigned bits) {
+    return Eigen::Vector3d((bits & 1u) ? 1.0 : 0.0, (bits & 2u) ? 1.0 : 0.0, (bits & 4u) ? 1.0 : 0.0);
+  };
+  if ((in.clipped & 7u) != 0) {
     ++row_accel_;
     const double beyond = std::max(0.0, config_.accel_shock_max - (in.accel_bad ? 0.0 : config_.accel_range));
-    velocity_.noalias() += (kRmsOfUniformExcess * beyond * dt) * (c_bn * in.f_clip.cwiseAbs());
+    velocity_.noalias() += (kRmsOfUniformExcess * beyond * dt) * (c_bn * axes(in.clipped & 7u));
   }
-  if (!in.w_clip.isZero(0.0)) {
+  if ((in.clipped & 56u) != 0) {
     ++row_gyro_;
     const double beyond = std::max(0.0, config_.gyro_rate_max - (in.gyro_bad ? 0.0 : config_.gyro_range));
-    attitude_.noalias() += (kRmsOfUniformExcess * beyond * dt) * (c_bn * in.w_clip.cwiseAbs());
+    attitude_.noalias() += (kRmsOfUniformExcess * beyond * dt) * (c_bn * axes((in.clipped >> 3) & 7u));
   }
 }
 

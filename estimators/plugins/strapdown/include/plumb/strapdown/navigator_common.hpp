@@ -22,9 +22,9 @@ struct InputReading {
   std::optional<double> depth;
   bool gyro_bad = false;  // saturated: the rate is the last good one
   bool accel_bad = false;
-  // Axes read at or beyond the sensor's range: +1 or -1 the side clipped, 0 within it.
-  Eigen::Vector3d f_clip = Eigen::Vector3d::Zero(), w_clip = Eigen::Vector3d::Zero();
-  bool clipped = false;
+  // Axes read at or beyond the sensor's range: bits 0-2 the accelerometers x, y, z, bits 3-5 the
+  // gyros (a byte: every reading is copied through the lag queue).
+  std::uint8_t clipped = 0;
 };
 
 // The reference field (|B|, dip) the detector and the magnetic updates are gated by: given, or
