@@ -42,6 +42,7 @@ void validate_imu_site(const Scenario& s, const Require& require) {
               finite_nonneg(g.accel_vrw_mps_rt_h),
           "IMU grade '" + g.name + "': biases and noise densities must be finite and >= 0");
   require(finite_nonneg(g.gyro_range_deg_s), "IMU grade '" + g.name + "': gyro range must be >= 0 deg/s (0: unlimited)");
+  require(finite_nonneg(g.accel_range_g), "IMU grade '" + g.name + "': accelerometer range must be >= 0 g (0: unlimited)");
   require(!s.gyro_bias || s.gyro_bias->allFinite(), "gyro bias must be finite");
   require(!s.accel_bias || s.accel_bias->allFinite(), "accelerometer bias must be finite");
 }

@@ -68,6 +68,9 @@ DrillingTrajectory::DrillingTrajectory(const DrillingPlan& plan) {
   require_plan(std::isfinite(plan.azimuth_deg) && std::isfinite(plan.toolface_deg), "start azimuth and toolface must be finite");
   require_plan(finite_nonneg(plan.alignment_s), "alignment time must be >= 0 s");
   require_plan(std::isfinite(plan.ramp_s) && plan.ramp_s > 0, "speed ramp must be > 0 s (speed must stay continuous)");
+  require_plan(std::isfinite(plan.stick_slip_rpm) && plan.stick_slip_rpm >= 0 && std::isfinite(plan.stick_slip_period_s) &&
+                   plan.stick_slip_period_s > 0,
+               "stick-slip must be >= 0 rpm with a period > 0 s");
 
   Phase cur;
   cur.inc0 = plan.inclination_deg * kDeg;
@@ -100,6 +103,10 @@ DrillingTrajectory::DrillingTrajectory(const DrillingPlan& plan) {
     ph.build = seg.build_deg_per_30m * kPer30m;
     ph.turn = seg.turn_deg_per_30m * kPer30m;
     ph.spin = seg.mode == SteeringMode::Rotary ? seg.rpm * kRpm / seg.rop_mps : 0.0;
+    if (seg.mode == SteeringMode::Rotary && plan.stick_slip_rpm > 0) {
+      ph.slip = plan.stick_slip_rpm * kRpm;
+      ph.slip_w = 2.0 * kPi / plan.stick_slip_period_s;
+    }
     phases_.push_back(ph);
     // The next phase starts from this one's end, evaluated in closed form.
     const double length = ph.rop * (duration - ph.ramp);

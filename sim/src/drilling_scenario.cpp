@@ -80,6 +80,9 @@ void validate(const DrillingScenario& s, std::size_t stop_count) {
             "a disturbed field must keep |B| >= 0 and dip within [-90, 90] deg");
   }
   require_drilling(finite_nonneg(s.depth.sigma_m) && finite_nonneg(s.depth.quantum_m), "depth noise and quantum must be >= 0 m");
+  require_drilling(finite_nonneg(s.depth.heave_amplitude_m) && std::isfinite(s.depth.heave_period_s) &&
+                       s.depth.heave_period_s > 0,
+                   "heave amplitude must be >= 0 m and its period > 0 s");
   const auto& v = s.vibration;
   const std::string vibration = vibration_problem(v);
   require_drilling(vibration.empty(), vibration);

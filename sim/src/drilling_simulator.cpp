@@ -14,7 +14,14 @@
 #include "truth_of_state.hpp"
 
 namespace plumb::sim {
+
 namespace {
+
+// The swell's phase from the seed alone (no draw from the noise streams: a run's noise does not
+// depend on whether it heaves).
+double heave_phase(std::uint64_t seed) {
+  return 2.0 * kPi * static_cast<double>((seed * 0x9E3779B97F4A7C15ULL) >> 11) / 9007199254740992.0;
+}
 
 // Separate streams per purpose so that adding vibration or changing a bias does not change the
 // noise sequence of the others.
@@ -86,6 +93,10 @@ Sample DrillingSimulator::next(TruthSample* truth) {
   }
   if (scenario_.depth.present) {
     double depth = st.depth_m + scenario_.depth.sigma_m * n_d;
+    if (scenario_.depth.heave_amplitude_m > 0) {
+      depth += scenario_.depth.heave_amplitude_m *
+               std::sin(2.0 * kPi * t / scenario_.depth.heave_period_s + heave_phase(scenario_.seed));
+    }
     const double q = scenario_.depth.quantum_m;
     if (q > 0) depth = q * std::round(depth / q);
     out.depth_m = depth;

@@ -26,6 +26,7 @@ DrillingState DrillingTrajectory::at(double t) const {
 
   double along = 0;  // distance drilled in this phase, m
   double speed = 0, accel = 0;
+  double slip_angle = 0, slip_rate = 0;  // stick-slip: drive x slip sin(w tau) / w, and its rate
   if (ph.moving) {
     const double tau = std::clamp(t, ph.t0, ph.t1) - ph.t0;
     const detail::Drive d = detail::raised_cosine_drive(tau, ph.t1 - ph.t0, ph.ramp);
@@ -33,13 +34,18 @@ DrillingState DrillingTrajectory::at(double t) const {
     speed = ph.rop * d.rate;
     accel = ph.rop * d.rate_dot;
     st.drive = d.rate;
+    if (ph.slip > 0) {
+      const double s = std::sin(ph.slip_w * tau) / ph.slip_w, c = std::cos(ph.slip_w * tau);
+      slip_angle = ph.slip * d.rate * s;
+      slip_rate = ph.slip * (d.rate_dot * s + d.rate * c);
+    }
   }
   st.depth_m = ph.s0 + along;
   st.speed_mps = speed;
   st.inclination = ph.inc0 + ph.build * along;
   st.azimuth = ph.azi0 + ph.turn * along;
-  st.toolface = ph.tf0 + ph.spin * along;
-  st.toolface_rate = ph.spin * speed;
+  st.toolface = ph.tf0 + ph.spin * along + slip_angle;
+  st.toolface_rate = ph.spin * speed + slip_rate;
   st.c_nb = c_nb(st.inclination, st.azimuth, st.toolface);
   st.w_nb = rate_nb(st.inclination, st.toolface, ph.build * speed, ph.turn * speed, st.toolface_rate);
 

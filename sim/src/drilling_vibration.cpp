@@ -15,7 +15,7 @@ Eigen::Vector3d DrillingSimulator::vibration_at(double t, double drive) {
   if (tones_.active() && drive > 0) out.head<2>() = drive * tones_.at(t);
   // Poisson arrivals (as on the platform); a shock keeps the drive of its start, and one arriving
   // while the tool stands is lost.
-  const double duration = std::max(v.shock_duration_s, 2.0 / scenario_.sample_rate_hz);
+  const double duration = std::max(v.shock_duration_s, (v.shock_rebounds ? 4.0 : 2.0) / scenario_.sample_rate_hz);
   while (t >= next_shock_) {
     shock_start_ = next_shock_;
     shock_until_ = shock_start_ + duration;
@@ -24,7 +24,8 @@ Eigen::Vector3d DrillingSimulator::vibration_at(double t, double drive) {
     next_shock_ += std::exponential_distribution<double>(v.shock_rate_hz)(vib_rng_);
   }
   if (t >= shock_start_ && t < shock_until_ && drive > 0) {
-    const double a = shock_drive_ * v.shock_peak * std::sin(kPi * (t - shock_start_) / duration);
+    const double cycles = v.shock_rebounds ? 2.0 : 1.0;  // half-sines
+    const double a = shock_drive_ * v.shock_peak * std::sin(cycles * kPi * (t - shock_start_) / duration);
     out.x() += a * std::cos(shock_dir_);
     out.y() += a * std::sin(shock_dir_);
   }

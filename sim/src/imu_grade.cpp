@@ -61,6 +61,10 @@ double ImuGrade::gyro_range() const {
   return gyro_range_deg_s > 0 ? gyro_range_deg_s * kDeg : std::numeric_limits<double>::infinity();
 }
 
+double ImuGrade::accel_range() const {
+  return accel_range_g > 0 ? accel_range_g * kMilliG * 1000.0 : std::numeric_limits<double>::infinity();
+}
+
 std::string describe(const ImuGrade& g) {
   std::ostringstream out;
   out << g.name << " IMU (gyro bias " << g.gyro_bias_deg_h << " deg/h, ARW " << g.gyro_arw_deg_rt_h
@@ -69,6 +73,7 @@ std::string describe(const ImuGrade& g) {
     out << "range " << g.gyro_range_deg_s << " deg/s)";
   else
     out << "unlimited range)";
+  if (g.accel_range_g > 0) out << ", accelerometers +-" << g.accel_range_g << " g";
   return out.str();
 }
 

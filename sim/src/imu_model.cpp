@@ -35,6 +35,7 @@ ImuModel::ImuModel(const ImuGrade& grade, double rate_hz, std::uint64_t seed,
   sigma_gyro_ = grade.gyro_noise_sigma(dt);
   sigma_accel_ = grade.accel_noise_sigma(dt);
   gyro_range_ = grade.gyro_range();
+  accel_range_ = grade.accel_range();
   const double lat = latitude_deg * kDeg;
   earth_rate_ned_ = earth_rate * Eigen::Vector3d(std::cos(lat), 0.0, -std::sin(lat));
 }
@@ -53,6 +54,11 @@ void ImuModel::measure(const Eigen::Vector3d& w_nb, const Eigen::Matrix3d& c_nb,
       out.flags |= flags::kGyroSaturated;
     }
   out.f = f + accel_bias_ + sigma_accel_ * n_a;
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(out.f[i]) > accel_range_) {
+      out.f[i] = std::copysign(accel_range_, out.f[i]);
+      out.flags |= flags::kAccelSaturated;
+    }
 }
 
 }  // namespace plumb::sim

@@ -116,7 +116,8 @@ FilterState::Prediction FilterState::predict(const ProcessNoise& noise, const Un
   }
   p.velocity_noise += unseen.velocity;
   p.displacement_noise = unseen.displacement;
-  add_noise(kf_.covariance(), p.velocity_noise, p.displacement_noise);
+  p.turn_noise = unseen.turn;
+  add_noise(kf_.covariance(), p.velocity_noise, p.displacement_noise, p.turn_noise);
   integrals_.clear();
   correction_.setZero();
   return p;

@@ -9,6 +9,8 @@ namespace {
 
 // Magnetometer readings below this are "no magnetometer" (a logger without one writes zeros).
 constexpr double kNoFieldUT = 1e-3;
+// A reading this close to the range sits at it (the last code of a converter is one step short).
+constexpr double kAtRange = 0.999;
 
 }  // namespace
 
@@ -22,6 +24,9 @@ void InputChecks::reset(const NavigatorConfig& config, Counters& counters) {
   shift_queue_.clear();
   gyro_history_.clear();
   dt_nominal_ = 0;
+  dt_jitter_ = 0;
+  last_seq_ = 0;
+  seq_counts_ = false;
   saw_gyro_ = saw_no_gyro_ = false;
 }
 
@@ -40,6 +45,12 @@ InputChecks::Verdict InputChecks::accept(const Sample& s, InputReading& in, Coun
   }
   if (last_t_ && s.t == *last_t_) {
     count(counters, "repeated_time");
+    verdict.repeated = verdict.same_stamp = true;
+    return verdict;
+  }
+  if (seq_counts_ && s.seq == last_seq_ && s.f == last_f_ && s.w == last_w_) {
+    count(counters, "repeated_samples");
+    verdict.repeated = true;
     return verdict;
   }
   if ((s.flags & flags::kOutOfRange) != 0) {
@@ -55,6 +66,13 @@ InputChecks::Verdict InputChecks::accept(const Sample& s, InputReading& in, Coun
     return verdict;
   }
   saw_gyro_ = true;
+  // The range on any axis, flagged or not (a file carries no flags): the part beyond is unknown.
+  for (int i = 0; i < 3; ++i) {
+    if (std::abs(s.f[i]) >= kAtRange * config_.accel_range) in.clipped |= static_cast<std::uint8_t>(1u << i);
+    if (std::abs(s.w[i]) >= kAtRange * config_.gyro_range) in.clipped |= static_cast<std::uint8_t>(8u << i);
+  }
+  if ((in.clipped & 7u) != 0) count(counters, "accel_clipped");
+  if ((in.clipped & 56u) != 0) count(counters, "gyro_clipped");
   in.w = s.w;
   if ((s.flags & flags::kGyroSaturated) != 0) {
     count(counters, "gyro_saturated");
@@ -84,14 +102,23 @@ InputChecks::Verdict InputChecks::accept(const Sample& s, InputReading& in, Coun
   if ((s.flags & flags::kHasDepth) != 0 && std::isfinite(s.depth_m)) in.depth = s.depth_m;
   if (last_t_) {
     const double dt = s.t - *last_t_;
+    const bool lost = lost_samples(dt);
+    if (lost) verdict.lost_dt = dt;
     if (dt > config_.max_gap_s) {
       count(counters, "gaps");
       verdict.gap = true;
-    } else {
+    } else if (!lost) {
+      // (Samples lost do not make the interval longer.)
+      if (dt_nominal_ > 0) dt_jitter_ += 0.01 * (1.25 * std::abs(dt - dt_nominal_) - dt_jitter_);
       dt_nominal_ = dt_nominal_ > 0 ? 0.99 * dt_nominal_ + 0.01 * dt : dt;
     }
   }
   last_t_ = s.t;
+  // (A stream whose samples all carry the same seq, 0 say, does not count them.)
+  if (last_t_ && s.seq != last_seq_) seq_counts_ = true;
+  last_seq_ = s.seq;
+  last_f_ = s.f;
+  last_w_ = s.w;
   ++*accepted_counter_;
   verdict.navigable = true;
   return verdict;

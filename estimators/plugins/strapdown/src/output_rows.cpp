@@ -108,6 +108,7 @@ Estimate OutputRows::row(double t, const RowContext& context, std::size_t& note_
     if (t >= gap_warning_from_ && t <= gap_warning_until_) warning = "time gap bridged by prediction only";
     if (!context.field_warning.empty()) warning += (warning.empty() ? "" : "; ") + context.field_warning;
     if (!context.motion_warning.empty()) warning += (warning.empty() ? "" : "; ") + context.motion_warning;
+    if (!context.range_warning.empty()) warning += (warning.empty() ? "" : "; ") + context.range_warning;
     if (context.azimuth_reference == "relative" && !config_.initial_azimuth && !config_.gyrocompass) {
       warning += std::string(warning.empty() ? "" : "; ") + "no magnetometer and no initial_azimuth_deg: azimuth relative to the alignment heading";
     }
@@ -165,12 +166,12 @@ void OutputRows::emit(double t, const RowContext& context, Counters& counters, s
 
 void OutputRows::store_epoch(const FilterState& filter, const FilterState::Prediction& prediction) {
   smoother_.store(prediction.phi, prediction.dt, prediction.noise, prediction.velocity_noise,
-                  prediction.displacement_noise, filter.correction(),
+                  prediction.displacement_noise, prediction.turn_noise, filter.correction(),
                   filter.state(), filter.gyro_bias(), filter.accel_bias(), filter.covariance());
 }
 
 void OutputRows::store_alignment(const FilterState& filter) {
-  smoother_.store(StateMatrix::Identity(), 0.0, ProcessNoise{}, Eigen::Matrix3d::Zero(), Eigen::Vector4d::Zero(),
+  smoother_.store(StateMatrix::Identity(), 0.0, ProcessNoise{}, Eigen::Matrix3d::Zero(), Eigen::Vector4d::Zero(), Eigen::Matrix<double, 6, 1>::Zero(),
                   filter.correction(),
                   filter.state(), filter.gyro_bias(), filter.accel_bias(), filter.covariance());
 }

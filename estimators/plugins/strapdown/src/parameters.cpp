@@ -24,10 +24,11 @@ constexpr double kMilliG = 9.80665e-3;                   // mg -> m/s^2
 struct Grade {
   const char* name;
   double gyro_bias_dph, gyro_arw, accel_bias_mg, accel_vrw, gyro_scale_ppm, gyro_misalignment_mrad, gyro_g_dph_g, accel_scale_ppm, accel_misalignment_mrad;
+  double gyro_range_dps, accel_range_g;  // the class's usual ranges (the simulator's gyro ranges)
 };
-constexpr Grade kGrades[] = {{"navigation", 0.01, 0.002, 0.025, 0.005, 5, 0.02, 0.1, 20, 0.02},
-                             {"tactical", 1.0, 0.05, 0.3, 0.03, 100, 0.1, 1, 100, 0.1},
-                             {"mems", 10.0, 0.3, 2.0, 0.06, 1000, 1.0, 10, 500, 0.5}};
+constexpr Grade kGrades[] = {{"navigation", 0.01, 0.002, 0.025, 0.005, 5, 0.02, 0.1, 20, 0.02, 500, 25},
+                             {"tactical", 1.0, 0.05, 0.3, 0.03, 100, 0.1, 1, 100, 0.1, 1000, 40},
+                             {"mems", 10.0, 0.3, 2.0, 0.06, 1000, 1.0, 10, 500, 0.5, 2000, 16}};
 
 std::optional<double> optional_number(const estimator::ParameterReader& reader, const estimator::Parameters& given,
                                       const std::string& name, double min, double max) {
@@ -138,6 +139,10 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"toolface_switch_deg", "5", "below this inclination the rows name the toolface from north as the one to steer by, with its sigma: the magnetic toolface (magnetic_toolface_deg, from the navigator's attitude and the reference field) or, without a magnetometer, the gyro toolface; the gravity toolface and the azimuth are weakly defined there (deg; 0: never)"},
       {"smooth", "0", "offline backward (RTS) smoother: push() emits nothing, flush() emits every row smoothed"},
       {"max_gap_s", "1", "a time step longer than this is a gap: reported, bridged by prediction only (s)"},
+      {"accel_range_g", "", "accelerometer range, +- on each axis (g, datasheet); a reading at or beyond it is clipped: the row says so and the step's sigma allows for what the clipped part could hide; empty: the grade's (navigation 25, tactical 40, mems 16)"},
+      {"gyro_range_dps", "", "gyro range, +- on each axis (deg/s, datasheet); a reading at or beyond it is clipped, as for the accelerometers; empty: the grade's (navigation 500, tactical 1000, mems 2000)"},
+      {"accel_shock_max_g", "0", "the largest acceleration the tool meets (g, its shock rating or the string's shock log): a clipped accelerometer reading may hide up to this less the range, added to the velocity's process noise; 0: not added (clipped readings are still counted, noticed and said on the rows: on the simulator's rebounding 30 g shocks the added noise made the attitude's sigma worse, docs/navigator.md)"},
+      {"gyro_rate_max_dps", "3000", "the fastest the tool turns (deg/s; stick-slip's slip phase reaches 2-3 times the string's mean speed): a clipped gyro reading may hide up to this less the range"},
       {"gyro_time_offset_s", "0", "gyro readings were measured this long after their time stamp (s)"},
       {"notice_after_s", "60", "data without alignment this long: the log says once which stillness test fails and what to change (s)"},
       {"no_stop_notice_s", "3600", "aligned, but no still period this long: the log says so once (s)"},
@@ -193,6 +198,10 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   c.gyro_bias_instability = r.number("gyro_bias_instability_dph", 0, 1e5) * kDegPerHour;
   c.accel_bias_instability = r.number("accel_bias_instability_mg", 0, 1e4) * kMilliG;
   c.bias_time_s = r.number("bias_time_s", 1, 1e7);
+  c.accel_range = optional_number(r, given, "accel_range_g", 0.1, 1e5).value_or(grade->accel_range_g) * kMilliG * 1000.0;
+  c.gyro_range = optional_number(r, given, "gyro_range_dps", 1, 1e6).value_or(grade->gyro_range_dps) * kDegToRad;
+  c.accel_shock_max = r.number("accel_shock_max_g", 0, 1e5) * kMilliG * 1000.0;
+  c.gyro_rate_max = r.number("gyro_rate_max_dps", 0, 1e6) * kDegToRad;
 
   const auto det = given.find("still_detector");
   const std::string detector = det == given.end() ? "auto" : det->second;

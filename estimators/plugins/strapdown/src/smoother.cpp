@@ -4,6 +4,7 @@ namespace plumb::strapdown {
 
 void RtsSmoother::store(const StateMatrix& phi, double dt, const ProcessNoise& noise,
                         const Eigen::Matrix3d& velocity_noise, const Eigen::Vector4d& displacement_noise,
+                        const Eigen::Matrix<double, 6, 1>& turn_noise,
                         const StateVector& correction, const NavState& state,
                         const Eigen::Vector3d& gyro_bias, const Eigen::Vector3d& accel_bias, const StateMatrix& p) {
   Epoch e;
@@ -13,6 +14,7 @@ void RtsSmoother::store(const StateMatrix& phi, double dt, const ProcessNoise& n
     for (int c = r; c < 3; ++c) e.velocity_noise[j++] = velocity_noise(r, c);
   }
   Eigen::Map<Eigen::Vector4d>(e.displacement_noise) = displacement_noise;
+  Eigen::Map<Eigen::Matrix<double, 6, 1>>(e.turn_noise) = turn_noise;
   std::size_t i = 0;
   for (int r = 0; r < kStates; ++r) {
     for (int c = r; c < kStates; ++c) e.p_upper[i++] = p(r, c);
@@ -48,7 +50,8 @@ StateMatrix RtsSmoother::predicted(const Epoch& next, const StateMatrix& phi, co
   for (int r = 0, j = 0; r < 3; ++r) {
     for (int c = r; c < 3; ++c, ++j) velocity(r, c) = velocity(c, r) = next.velocity_noise[j];
   }
-  add_noise(pred, velocity, Eigen::Map<const Eigen::Vector4d>(next.displacement_noise));
+  add_noise(pred, velocity, Eigen::Map<const Eigen::Vector4d>(next.displacement_noise),
+            Eigen::Map<const Eigen::Matrix<double, 6, 1>>(next.turn_noise));
   return pred;
 }
 

@@ -57,6 +57,11 @@ struct DrillingPlan {
   double toolface_deg = 0;       // gravity toolface at the start; sliding segments keep the current one
   double alignment_s = 60;       // still period before the first segment
   double ramp_s = 5;             // raised-cosine speed change at each start and stop of drilling
+  // Stick-slip of rotary segments: the spin rate oscillates by +-stick_slip_rpm (scaled by the
+  // drive, so it fades in and out with the speed ramps) with this period; the toolface at each
+  // segment's end is unchanged. 0: a steady spin (the default).
+  double stick_slip_rpm = 0;
+  double stick_slip_period_s = 4;
   std::vector<DrillSegment> segments;
 };
 
@@ -80,6 +85,10 @@ struct DepthModel {
   bool present = true;           // Sample::depth_m with flags::kHasDepth
   double sigma_m = 0;            // white noise per sample
   double quantum_m = 0;          // rounding step of the rig's reading (after the noise); 0: none
+  // A floating rig's heave compensator leaves a residual on the measured depth only (the tool does
+  // not move with it): a swell of this amplitude and period, its phase drawn from the seed. 0: none.
+  double heave_amplitude_m = 0;
+  double heave_period_s = 10;
 };
 
 struct DrillingScenario {
@@ -137,6 +146,7 @@ class DrillingTrajectory {
     double rop = 0, ramp = 0;       // m/s, s
     double build = 0, turn = 0;     // rad/m
     double spin = 0;                // toolface rad per metre drilled (rotary)
+    double slip = 0, slip_w = 0;    // stick-slip: rate amplitude (rad/s) and angular frequency (rotary)
     double s0 = 0, inc0 = 0, azi0 = 0, tf0 = 0;  // at t0
     Eigen::Vector3d p0 = Eigen::Vector3d::Zero();
     std::optional<std::size_t> stop_index;        // Stop segments: their index among the stops

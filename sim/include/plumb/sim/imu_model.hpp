@@ -30,6 +30,9 @@ struct ImuGrade {
   double accel_bias_mg = 0;        // 1-sigma per axis; 1 mg = 9.80665e-3 m/s^2
   double accel_vrw_mps_rt_h = 0;   // velocity random walk
   double gyro_range_deg_s = 0;     // samples beyond +-range are clipped and flagged; 0: unlimited
+  // Accelerometer range: samples beyond +-range on an axis sit at the range, flagged saturated
+  // (a shock of tens of g on a +-16 g MEMS part). 0 (every named grade): unlimited.
+  double accel_range_g = 0;
 
   static ImuGrade navigation();
   static ImuGrade tactical();
@@ -44,6 +47,7 @@ struct ImuGrade {
   double gyro_noise_sigma(double dt) const;     // rad/s per sample
   double accel_noise_sigma(double dt) const;    // m/s^2 per sample
   double gyro_range() const;                    // rad/s; infinity when unlimited
+  double accel_range() const;                   // m/s^2; infinity when unlimited
 };
 
 // One run's IMU, shared by the drilling and walking simulators: the grade's biases drawn from the
@@ -52,7 +56,7 @@ class ImuModel {
  public:
   ImuModel(const ImuGrade& grade, double rate_hz, std::uint64_t seed, const std::optional<Eigen::Vector3d>& gyro_bias,
            const std::optional<Eigen::Vector3d>& accel_bias, double earth_rate, double latitude_deg);
-  // Gyros and accelerometers (flags kHasGyro, kGyroSaturated) from the true motion: w_nb and C_n^b,
+  // Gyros and accelerometers (flags kHasGyro, kGyroSaturated, kAccelSaturated) from the true motion: w_nb and C_n^b,
   // dv/dt and v in NED, g, a specific force added on top (vibration), and unit normal draws n_w and
   // n_a from the caller's noise stream.
   void measure(const Eigen::Vector3d& w_nb, const Eigen::Matrix3d& c_nb, const Eigen::Vector3d& acceleration,
@@ -63,7 +67,7 @@ class ImuModel {
 
  private:
   Eigen::Vector3d gyro_bias_, accel_bias_, earth_rate_ned_;
-  double sigma_gyro_ = 0, sigma_accel_ = 0, gyro_range_ = 0;
+  double sigma_gyro_ = 0, sigma_accel_ = 0, gyro_range_ = 0, accel_range_ = 0;
 };
 
 // One readable line: the grade's name and its error levels.

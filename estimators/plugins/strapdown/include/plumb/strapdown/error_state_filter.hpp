@@ -125,8 +125,11 @@ class ErrorStateFilter {
 };
 
 // Process noise beyond the figures' added to a covariance: velocity (3 x 3), and u u' over the
-// position and the along-hole distance (u = displacement: a way the tool may have gone unseen).
-void add_noise(StateMatrix& p, const Eigen::Matrix3d& velocity, const Eigen::Vector4d& displacement);
+// position and the along-hole distance (u = displacement: a way the tool may have gone unseen), and
+// u u' over the attitude and velocity (u = turn: a turn clipped readings or a gap may hide, and the
+// velocity it tilted).
+void add_noise(StateMatrix& p, const Eigen::Matrix3d& velocity, const Eigen::Vector4d& displacement,
+               const Eigen::Matrix<double, 6, 1>& turn = Eigen::Matrix<double, 6, 1>::Zero());
 
 // Applies an error estimate to the whole-value state (and the bias estimates).
 void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bias, Eigen::Vector3d& accel_bias,

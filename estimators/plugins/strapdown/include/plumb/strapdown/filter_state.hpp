@@ -50,6 +50,8 @@ class FilterState {
     Eigen::Matrix3d velocity_noise = Eigen::Matrix3d::Zero();
     // u u' added to the block of the position and the along-hole distance: the way a stop may hide.
     Eigen::Vector4d displacement_noise = Eigen::Vector4d::Zero();
+    // u u' added to the attitude and velocity block: a turn clipped readings or a gap could hide.
+    Eigen::Matrix<double, 6, 1> turn_noise = Eigen::Matrix<double, 6, 1>::Zero();
   };
   Prediction predict(const ProcessNoise& noise, const UnseenMotionNoise& unseen = {});
   // The minor steps go on from the (corrected) state.

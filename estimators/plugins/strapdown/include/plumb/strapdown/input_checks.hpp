@@ -24,6 +24,9 @@ class InputChecks {
     bool navigable = false;
     bool first_without_field = false;  // the stream's first reading, and it has no field
     bool gap = false;                  // more than max_gap_s after the reading before
+    bool repeated = false;             // a sample sent twice (dropped): the same stamp, or the same record
+    bool same_stamp = false;
+    double lost_dt = 0;                // > 0: samples lost in this step (kDropoutFactor nominal intervals)
   };
   Verdict accept(const Sample& s, InputReading& in, Counters& counters);
   // gyro_time_offset_s: the gyro reading stamped t was measured at t + offset. A reading waits in
@@ -36,6 +39,11 @@ class InputChecks {
 
   std::optional<double> last_t() const { return last_t_; }
   double dt_nominal() const { return dt_nominal_; }
+  // A step this long lost samples: beyond kDropoutFactor nominal intervals and beyond what the
+  // stamps' own jitter makes of one interval.
+  bool lost_samples(double dt) const {
+    return dt_nominal_ > 0 && dt > kDropoutFactor * dt_nominal_ && dt - dt_nominal_ > kJitterSigmas * dt_jitter_;
+  }
   // Only samples without gyros so far: rows say strapdown needs them.
   bool no_gyro_at_all() const { return saw_no_gyro_ && !saw_gyro_; }
 
@@ -47,9 +55,14 @@ class InputChecks {
   std::uint64_t* accepted_counter_ = nullptr;
   std::optional<double> last_t_;
   std::optional<Eigen::Vector3d> last_good_w_, last_good_f_;
+  // The last navigable sample's record, to know it when it comes again under a later stamp.
+  std::uint64_t last_seq_ = 0;
+  bool seq_counts_ = false;
+  Eigen::Vector3d last_f_ = Eigen::Vector3d::Zero(), last_w_ = Eigen::Vector3d::Zero();
   std::deque<InputReading> shift_queue_;
   std::deque<std::pair<double, Eigen::Vector3d>> gyro_history_;
   double dt_nominal_ = 0;
+  double dt_jitter_ = 0;  // the intervals' spread about the nominal (mean absolute deviation x 1.25)
   bool saw_gyro_ = false, saw_no_gyro_ = false;
 };
 

@@ -27,7 +27,9 @@
 #include "plumb/strapdown/stillness.hpp"
 #include "plumb/strapdown/stillness_lag.hpp"
 #include "plumb/strapdown/stillness_watch.hpp"
+#include "plumb/strapdown/sensor_range.hpp"
 #include "plumb/strapdown/stop_updates.hpp"
+#include "plumb/strapdown/stream_faults.hpp"
 #include "plumb/strapdown/unseen_motion.hpp"
 
 namespace plumb::strapdown {
@@ -94,6 +96,8 @@ class Navigator {
   OutputRows rows_;
   StillnessLag lag_;
   UnseenMotion unseen_;
+  StreamFaults faults_;
+  SensorRange ranges_;
 };
 
 }  // namespace plumb::strapdown

@@ -22,6 +22,9 @@ struct InputReading {
   std::optional<double> depth;
   bool gyro_bad = false;  // saturated: the rate is the last good one
   bool accel_bad = false;
+  // Axes read at or beyond the sensor's range: bits 0-2 the accelerometers x, y, z, bits 3-5 the
+  // gyros (a byte: every reading is copied through the lag queue).
+  std::uint8_t clipped = 0;
 };
 
 // The reference field (|B|, dip) the detector and the magnetic updates are gated by: given, or
@@ -41,6 +44,15 @@ inline constexpr double kMinSigmaAccel = 1e-3;    // m/s^2 per sample
 inline constexpr double kMinSigmaGyro = 1e-6;     // rad/s per sample
 inline constexpr double kMinMeanSdGyro = 1e-9;    // rad/s, a zero-rate update's mean
 inline constexpr double kMinMeanSdAccel = 1e-6;   // m/s^2, a tilt update's mean
+
+// A step longer than this many nominal intervals has lost samples (one lost sample doubles it).
+inline constexpr double kDropoutFactor = 1.5;
+// ... and longer than the nominal by this many times the intervals' own spread (a logger's clock
+// that jitters by a millisecond at 400 Hz spreads them by 35 %).
+inline constexpr double kJitterSigmas = 5.0;
+
+// A still tool stays still across a gap up to this long (s): a logger's dropout, not a new run.
+inline constexpr double kStillAcrossGapS = 5.0;
 
 // A rig reports depth about once a second: a held value is at most this old while the tool moves (s).
 inline constexpr double kHeldDepthAgeS = 2.0;

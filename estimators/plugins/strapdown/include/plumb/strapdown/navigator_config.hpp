@@ -112,6 +112,12 @@ struct NavigatorConfig {
   double toolface_switch = 5.0 * 3.14159265358979323846 / 180.0;
   bool smooth = false;
   double max_gap_s = 1.0;
+  // The sensors' ranges (datasheet): a reading at or beyond one on any axis is clipped; and how far
+  // beyond it the truth can plausibly be (a drilling tool's shocks, stick-slip's slip phase).
+  double accel_range = 16 * 9.80665;      // m/s^2
+  double gyro_range = 2000 * 3.14159265358979323846 / 180.0;  // rad/s
+  double accel_shock_max = 0;              // m/s^2; 0: a clipped accelerometer adds no process noise
+  double gyro_rate_max = 3000 * 3.14159265358979323846 / 180.0;  // rad/s
   double gyro_time_offset_s = 0;       // gyro stamps lag the true gyro time by this (s)
 };
 

@@ -34,6 +34,7 @@ struct RowContext {
   std::string azimuth_reference;
   std::string field_warning;            // why the last stop gave no azimuth update
   std::string motion_warning;           // the along-hole motion is not measured (unseen_motion.hpp)
+  std::string range_warning;            // readings of this row clipped at a sensor's range (sensor_range.hpp)
   // The reference field's direction in the navigation frame, when the magnetometer serves azimuth:
   // the magnetic toolface comes from it (else the gyro toolface, from north).
   std::optional<Eigen::Vector3d> field_direction_n;

@@ -23,6 +23,9 @@ struct UnseenMotionNoise {
   Eigen::Matrix3d velocity = Eigen::Matrix3d::Zero();
   // The position and the along-hole distance together: u u' is added to their 4 x 4 block.
   Eigen::Vector4d displacement = Eigen::Vector4d::Zero();
+  // The attitude (rad, NED) and the velocity it moved: u u' is added to their 6 x 6 block (a turn
+  // the readings did not show: a clipped gyro's, sensor_range.hpp; a gap's, stream_faults.hpp).
+  Eigen::Matrix<double, 6, 1> turn = Eigen::Matrix<double, 6, 1>::Zero();
 };
 
 class UnseenMotion {

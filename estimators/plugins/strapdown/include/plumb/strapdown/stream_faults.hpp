@@ -1,0 +1,59 @@
+// What the sample stream itself got wrong, and what it costs: samples lost (a step well above the
+// nominal interval) bridged by the mechanization over the gap, with the process noise of what the
+// lost readings could have been; samples sent twice (the same stamp, or the same record again
+// under a later stamp) dropped. Both counted, said once in a notice, and the rows after a gap say
+// it was bridged.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "plumb/strapdown/error_state_filter.hpp"
+#include "plumb/strapdown/navigator_common.hpp"
+#include "plumb/strapdown/unseen_motion.hpp"
+
+namespace plumb::strapdown {
+
+class StreamFaults {
+ public:
+  void reset();
+  // Every navigable reading, dt after the one before: the spread of the readings about their own
+  // local trend, from second differences over evenly spaced readings.
+  void observe(const InputReading& in, double dt, double dt_nominal);
+  // A gap of dt (the step that ends at t) where dt_nominal was due, as the input checks see it:
+  // counted, and said once.
+  void lost(double t, double dt, double dt_nominal, Counters& counters);
+  // The same gap as the filter bridges it, from the reading before (prev) to this one (in), the tool
+  // frame to NED c_bn: the lost readings' share of the process noise of the epoch that bridges it.
+  void bridge(const InputReading& prev, const InputReading& in, double dt_nominal, const Eigen::Matrix3d& c_bn);
+  // The turn the gaps since the last epoch may hide, for the epoch; forgets it.
+  void add_to(UnseenMotionNoise& noise);
+  // A sample sent twice at t (dropped by the input checks).
+  void repeat(double t, bool same_stamp);
+  // The epoch's process noise (dt long) with what the gaps since the last epoch cost; forgets them.
+  ProcessNoise widen(const ProcessNoise& base, double dt);
+  std::vector<std::string> take_notices();
+  // The specific force of the last readings, averaged over a tenth of a second: what a gap's step
+  // starts from instead of the last reading's, whose vibration would be held through the gap.
+  const Eigen::Vector3d& recent_force() const { return f_mean_; }
+
+ private:
+  struct Recent {
+    double t = 0;
+    Eigen::Vector3d w, f;
+  };
+  Recent r0_, r1_;
+  int recent_ = 0;
+  double spread_w2_ = 0, spread_f2_ = 0;
+  Eigen::Vector3d f_mean_ = Eigen::Vector3d::Zero();
+  bool f_mean_set_ = false;  // mean square per axis about the local trend
+  double pending_att_ = 0, pending_vel_ = 0;  // variance per axis to add at the next epoch
+  Eigen::Matrix<double, 6, 1> pending_turn_ = Eigen::Matrix<double, 6, 1>::Zero();
+  Eigen::Matrix3d pending_force_ = Eigen::Matrix3d::Zero();
+  bool gap_said_ = false, repeat_said_ = false;
+  std::vector<std::string> notices_;
+};
+
+}  // namespace plumb::strapdown

@@ -1,0 +1,125 @@
+#include "plumb/strapdown/stream_faults.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace plumb::strapdown {
+
+namespace {
+
+// The spread's memory: long enough to hold a few seconds of drilling, short enough to follow a
+// change from still to turning.
+constexpr double kSpreadMemoryS = 2.0;
+// The force's mean before a gap: a tenth of a second takes out a bit's vibration (tens of hertz)
+// and keeps a turning tool's gravity (its lateral part loses 0.4 % at 30 rpm).
+constexpr double kForceMemoryS = 0.1;
+
+}  // namespace
+
+void StreamFaults::reset() {
+  recent_ = 0;
+  f_mean_set_ = false;
+  spread_w2_ = spread_f2_ = 0;
+  pending_att_ = pending_vel_ = 0;
+  pending_turn_.setZero();
+  pending_force_.setZero();
+  gap_said_ = repeat_said_ = false;
+  notices_.clear();
+}
+
+// A white sequence x has var(x[k] - 2 x[k-1] + x[k-2]) = 6 var(x), and a trend that is locally a
+// line or a slow curve drops out: what is left is how far a reading strays from what its
+// neighbours say, which is what a lost reading's interpolation misses.
+void StreamFaults::observe(const InputReading& in, double dt, double dt_nominal) {
+  const bool even = dt_nominal > 0 && std::abs(dt - dt_nominal) < 0.25 * dt_nominal;
+  if (!even) recent_ = 0;
+  if (recent_ >= 2 && std::abs((r1_.t - r0_.t) - dt) < 0.25 * dt_nominal) {
+    const double a = std::min(1.0, dt / kSpreadMemoryS);
+    spread_w2_ += a * ((in.w - 2.0 * r1_.w + r0_.w).squaredNorm() / 18.0 - spread_w2_);
+    spread_f2_ += a * ((in.f - 2.0 * r1_.f + r0_.f).squaredNorm() / 18.0 - spread_f2_);
+  }
+  if (f_mean_set_ && even) {
+    f_mean_ += std::min(1.0, dt / kForceMemoryS) * (in.f - f_mean_);
+  } else {
+    f_mean_ = in.f;
+    f_mean_set_ = true;
+  }
+  r0_ = r1_;
+  r1_ = Recent{in.t, in.w, in.f};
+  recent_ = std::min(recent_ + 1, 2);
+}
+
+// The lost readings are taken as unknowns with the spread the readings show, each standing for
+// dt_nominal: over a gap of T they add spread^2 dt_nominal T to the attitude's (rate) and the
+// velocity's (specific force) variance per axis. The filter's white noise already covers the
+// sensors' own noise over T; this is the motion beyond it the readings would have shown.
+// Across a gap of T the mechanization takes the rate and the force as lines between the readings
+// on either side. Where they changed (a spin that speeds up, a slide that starts), the truth went
+// from one to the other by a path the readings do not show: a monotone change keeps the integral
+// within |change| T / 2 of the line's, taken as uniform (rms over sqrt(3)) along the change. The
+// attitude error grows through the gap, and tilts the specific force into the velocity on the way:
+// dv = -[f_n x] dtheta T / 2, correlated with it.
+void StreamFaults::bridge(const InputReading& prev, const InputReading& in, double dt_nominal,
+                          const Eigen::Matrix3d& c_bn) {
+  const double dt = in.t - prev.t, missing_s = dt - dt_nominal;
+  // The force's share goes to the velocity at the gap's end (below), not as a random walk through
+  // the epoch: a random walk would tie it to the position, and a lateral-velocity update after the
+  // gap would move the position by metres for a velocity error the step made at its end.
+  pending_att_ += spread_w2_ * dt_nominal * missing_s;
+  constexpr double kHalfOverRoot3 = 0.28867513459481287;  // 1 / (2 sqrt(3))
+  const Eigen::Vector3d dtheta = (kHalfOverRoot3 * dt) * (c_bn * (in.w - prev.w));
+  const Eigen::Vector3d f_n = c_bn * in.f;
+  pending_turn_.head<3>() += dtheta;
+  pending_turn_.tail<3>() += (-0.5 * dt) * f_n.cross(dtheta);
+  const Eigen::Vector3d dv = (kHalfOverRoot3 * dt) * (c_bn * (in.f - prev.f));
+  pending_force_ += dv * dv.transpose();
+  pending_force_.diagonal().array() += spread_f2_ * dt_nominal * missing_s;
+  recent_ = 0;
+}
+
+void StreamFaults::add_to(UnseenMotionNoise& noise) {
+  noise.turn += pending_turn_;
+  noise.velocity += pending_force_;
+  pending_turn_.setZero();
+  pending_force_.setZero();
+}
+
+void StreamFaults::lost(double t, double dt, double dt_nominal, Counters& counters) {
+  const double missing_s = dt - dt_nominal;
+  count(counters, "dropouts");
+  count(counters, "missing_samples", static_cast<std::uint64_t>(std::max(0.0, std::round(missing_s / dt_nominal))));
+  if (!gap_said_) {
+    gap_said_ = true;
+    notices_.push_back(format("samples lost: %.3f s without a sample before t = %.3f s (about %.0f samples)", dt, t,
+                              std::round(missing_s / dt_nominal)) +
+                       "; gaps are bridged by the mechanization with the process noise of their length and of what "
+                       "the lost readings could have shown, counted as dropouts and missing_samples, and the rows "
+                       "after one say so");
+  }
+}
+
+void StreamFaults::repeat(double t, bool same_stamp) {
+  if (repeat_said_) return;
+  repeat_said_ = true;
+  notices_.push_back(format("a sample sent twice at t = %.3f s", t) +
+                     (same_stamp ? " (the same time stamp)" : " (the same record under a later stamp)") +
+                     ": repeats are dropped and counted (repeated_time, repeated_samples)");
+}
+
+ProcessNoise StreamFaults::widen(const ProcessNoise& base, double dt) {
+  ProcessNoise noise = base;
+  if (dt > 0 && (pending_att_ > 0 || pending_vel_ > 0)) {
+    noise.gyro_arw = std::sqrt(noise.gyro_arw * noise.gyro_arw + pending_att_ / dt);
+    noise.accel_vrw = std::sqrt(noise.accel_vrw * noise.accel_vrw + pending_vel_ / dt);
+  }
+  pending_att_ = pending_vel_ = 0;
+  return noise;
+}
+
+std::vector<std::string> StreamFaults::take_notices() {
+  std::vector<std::string> out;
+  out.swap(notices_);
+  return out;
+}
+
+}  // namespace plumb::strapdown
