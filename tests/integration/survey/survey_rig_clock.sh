@@ -41,6 +41,8 @@ pids+=($!)
 rc=0
 wait "$survey" || rc=$?
 "$bin/plumb-sim" "${run[@]}" --csv "$work/truth" > /dev/null
+# The status echo has what the checks below read; stop it rather than wait out its 120 s (it may
+# have ended already, hence || true). It decides no check.
 kill "$echo_status" 2>/dev/null || true
 if [ $rc -eq 0 ]; then pass "plumb-survey reached 7 stations"
 else fail "plumb-survey exit $rc: $(cat "$work/survey.err")"; fi

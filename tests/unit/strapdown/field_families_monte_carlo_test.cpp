@@ -1,8 +1,8 @@
-// The navigator on what the field does to its input (issue 35, item 4), each over a Monte Carlo of
-// seeds (ctest label `montecarlo`): samples lost for 0.1-3 s and samples sent twice; shocks clipped
+// The navigator on what the field does to its input, each over a Monte Carlo of seeds (ctest
+// label `montecarlo`): samples lost for 0.1-3 s and samples sent twice; shocks clipped
 // at the accelerometers' range; stick-slip past the gyros' range. Each family must answer on every
 // run, keep each angle's RMS(error/sigma) within 2 and the end position's within 3, and with depth
-// meet the issue's targets: the tool axis within 0.2 deg (tactical) or 0.5 deg (MEMS), the end
+// meet the field targets: the tool axis within 0.2 deg (tactical) or 0.5 deg (MEMS), the end
 // position within 1 % of MD. What is not met yet is bounded at its measured level (said where).
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@
 namespace plumb::strapdown::test {
 namespace {
 
-// The field targets of issue 35 for one family and grade.
+// The field targets (tool axis, end position, honest sigma) for one family and grade.
 // (Where a family misses a target today, its measured level is the bound: a regression fails.)
 void expect_field_targets(const FamilyResult& f, const std::string& grade, double max_axis_deg,
                           double end_rms_z = 3.0, double end_pct = 1.0, double angle_rms_z = 2.0) {
