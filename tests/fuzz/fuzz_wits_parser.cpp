@@ -1,9 +1,11 @@
 // libFuzzer target: the WITS level-0 frame parser and depth decoder on arbitrary bytes, fed in
 // pieces whose sizes come from the input too. Whatever came before, a line break and a good frame
-// must give that frame's depth; the counters never exceed the bytes fed.
+// must give that frame's depth (at once, or once it has held for the frames the decoder needs to
+// accept a new level after a jump); the counters never exceed the bytes fed.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,7 +32,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // the good frame is the last one out.
   parser.feed("\r\n&&\r\n01081234.50\r\n!!\r\n", frames);
   if (frames.empty() || frames.size() > 2) std::abort();
-  const auto reading = decoder.decode(frames.back(), t + 1);
-  if (!reading || reading->depth_m != 1234.5) std::abort();
+  const plumb::wits::DepthOptions defaults;
+  std::optional<plumb::wits::DepthReading> reading;
+  for (int k = 1; k <= defaults.jump_confirm_frames; ++k) {
+    reading = decoder.decode(frames.back(), t + k);
+    if (reading && reading->depth_m != 1234.5) std::abort();
+  }
+  if (!reading) std::abort();
   return 0;
 }
