@@ -54,7 +54,7 @@ void StillnessWatch::reset(const NavigatorConfig& config) {
   first_t_.reset();
   depth_seen_ = false;
   tally_.clear();
-  align_notice_given_ = stop_notice_given_ = false;
+  align_notice_given_ = stop_notice_given_ = depth_raised_notice_given_ = false;
   last_still_t_ = 0;
   notices_.clear();
 }
@@ -124,6 +124,13 @@ StillnessState StillnessWatch::before_alignment(const InputReading& in, std::opt
 
 StillnessState StillnessWatch::aligned(const InputReading& in, const FilterState& filter, std::optional<double> b0) {
   if (lagging_) turn_with(in);
+  if (in.depth && !config_.depth_noise_stated) {
+    noise_floor_.add_depth(in.t, in.depth);
+    if (noise_floor_.blocks() != floor_blocks_used_) {
+      floor_blocks_used_ = noise_floor_.blocks();
+      adopt_depth_floor();
+    }
+  }
   const bool was_still = detector_.still();
   if (in.gyro_bad || in.accel_bad) {
     detector_.reset();
@@ -216,10 +223,26 @@ void StillnessWatch::adopt_noise_floor() {
     if (!config_.accel_noise_stated) measured_sigma_a_ = noise_floor_.accel_sd();
     if (!config_.gyro_noise_stated) measured_sigma_w_ = noise_floor_.gyro_sd();
   }
-  if (!config_.depth_noise_stated && noise_floor_.depth_sd()) {
-    measured_depth_sd_ = noise_floor_.depth_sd();
-    depth_sd_ = std::max(config_.depth_sd, *measured_depth_sd_);
-    refresh_depth_tolerance();
+  adopt_depth_floor();
+}
+
+// Once aligned, the depth's noise changes only when the reports show more than the filter takes
+// (a swell that starts or grows): a floor that falls (the sea calms, or the quiet blocks of an
+// exact simulated depth) would make the depth updates trust a swell between its crests, or arm the
+// detector's test on means with no noise at all.
+void StillnessWatch::adopt_depth_floor() {
+  const auto floor = noise_floor_.depth_sd();
+  if (config_.depth_noise_stated || !floor) return;
+  if (aligned_ && *floor <= depth_sd_) return;
+  const double before = depth_sd_;
+  measured_depth_sd_ = floor;
+  depth_sd_ = std::max(config_.depth_sd, *floor);
+  refresh_depth_tolerance();
+  if (aligned_ && !depth_raised_notice_given_ && depth_sd_ > 2 * before) {
+    depth_raised_notice_given_ = true;
+    notices_.push_back(format("the depth reports wander by %.3g m rms about their trend over %.0f s (a floating rig's heave?): "
+                              "their noise raised from %.3g m; state depth_sd_m if the rig's figure is known",
+                              depth_sd_, DepthNoiseFloor::kLineBlockSeconds, before));
   }
 }
 

@@ -28,7 +28,7 @@ StationDetector::StationDetector(DetectorOptions options, Sink sink, std::functi
 
 double StationDetector::depth_sd_m() const {
   if (options_.depth_sd_m >= 0) return options_.depth_sd_m;
-  const auto measured = noise_.sd();
+  const auto measured = noise_.second_difference_sd();
   if (measured) return std::max(*measured, reported_sd_);
   return reported_sd_ > 0 ? reported_sd_ : std::numeric_limits<double>::quiet_NaN();
 }

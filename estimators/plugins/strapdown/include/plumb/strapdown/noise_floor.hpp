@@ -20,6 +20,8 @@ class NoiseFloor {
  public:
   // Each reading in time order; depth when the row carries one.
   void add(double t, const Eigen::Vector3d& f, const Eigen::Vector3d& w, std::optional<double> depth);
+  // Once aligned only the depth's noise is still followed: a swell shows over minutes.
+  void add_depth(double t, std::optional<double> depth) { depth_.add(t, depth); }
   void clear() { *this = NoiseFloor(); }
   // Per-sample standard deviation per axis; none until enough blocks were seen.
   std::optional<double> accel_sd() const { return floor_of(accel_blocks_, kMinBlocks); }

@@ -54,7 +54,8 @@ class StillnessWatch {
 
   bool still() const { return detector_.still(); }
   StillnessConfig::Mode mode() const { return detector_.config().mode; }
-  // The filter's depth noise: stated, or the larger of the default and the floor.
+  // The filter's depth noise: stated, or the larger of the default and the floor (which may grow
+  // after alignment, when the reports' spread about their trend shows a swell).
   double depth_sd() const { return depth_sd_; }
   // The depth test's limit: the largest 1 s depth change of a tool it calls still (m).
   double depth_tolerance() const { return detector_.config().depth_tol_m; }
@@ -73,6 +74,7 @@ class StillnessWatch {
   void follow_filter(const FilterState& filter, double t);
   void watch_before_alignment(const InputReading& in);
   void adopt_noise_floor();
+  void adopt_depth_floor();
   bool noise_known() const;
   std::string failing_test_text() const;
 
@@ -94,6 +96,7 @@ class StillnessWatch {
   // Per-sample noise read off the data, for what the user did not state (the magnitude detector).
   std::optional<double> measured_sigma_a_, measured_sigma_w_, measured_depth_sd_;
   double depth_sd_ = 0.01;
+  bool depth_raised_notice_given_ = false;
   std::optional<double> first_t_;
   bool depth_seen_ = false;
   StillnessTally tally_;  // what kept the detector from a still period since alignment or the last stop
