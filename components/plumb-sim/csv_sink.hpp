@@ -9,7 +9,8 @@
 namespace plumb::sim_component {
 
 // Optional columns: the platform writes gyros (unless --no-gyro) and temperature; a drilling run
-// writes gyros and depth_m in sensor.csv and the position columns in truth.csv.
+// writes gyros, depth_m (and temp_c with --circulation-temp) in sensor.csv and the position columns
+// in truth.csv.
 struct CsvColumns {
   bool gyro = true;
   bool temperature = true;

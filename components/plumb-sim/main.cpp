@@ -201,7 +201,7 @@ int run_main(int argc, char** argv) {
     if (is_drilling(scenario_options)) {
       const sim::DrillingScenario scenario = make_drilling_scenario(app, scenario_options);
       sim::DrillingSimulator simulator(scenario);
-      const CsvColumns columns{true, false, scenario.depth.present, true};
+      const CsvColumns columns{true, scenario.temperature.enabled, scenario.depth.present, true};
       return simulate(simulator, sim::describe(scenario), scenario.sample_rate_hz, scenario.tool_id, columns,
                       output_options);
     }

@@ -109,6 +109,10 @@ void add_scenario_options(CLI::App& app, ScenarioOptions& o) {
                  "drilling: STOP:DELTA_UT:DELTA_DIP_DEG shifts |B| and dip while the tool stands at that pipe "
                  "connection (0 = first); repeatable");
   app.add_flag("--no-depth", o.no_depth, "drilling: no measured depth in the samples");
+  app.add_option("--circulation-temp", o.circulation_temp,
+                 "drilling: MUD_C:FORMATION_C, the tool's temperature on the samples (temp_c): it cools toward the "
+                 "mud's while drilling (90 s time constant) and warms toward the formation's at stops (120 s), from "
+                 "the mud's; the biases follow it by the grade's coefficients (sim/tool_temperature.hpp)");
   app.add_option("--depth-noise", o.depth_noise, "drilling: measured-depth noise sigma, m");
   app.add_option("--depth-step", o.depth_step, "drilling: measured-depth reading step, m (0: none)");
   app.add_option("--walk-length", o.walk_length,
@@ -124,7 +128,7 @@ sim::Scenario make_scenario(const CLI::App& app, const ScenarioOptions& o) {
   for (const char* option : {"--grade", "--gyro-range", "--no-mag"})
     require(!given(app, option),
             std::string(option) + " applies to drilling runs and walks only (--scenario drilling or walk)");
-  for (const char* option : {"--mag-disturbance", "--no-depth", "--depth-noise", "--depth-step"})
+  for (const char* option : {"--mag-disturbance", "--no-depth", "--depth-noise", "--depth-step", "--circulation-temp"})
     require(!given(app, option), std::string(option) + " applies to drilling runs only (--scenario drilling)");
   for (const char* option : {"--walk-length", "--walk-climb"})
     require(!given(app, option), std::string(option) + " applies to walks only (--scenario walk)");
@@ -236,6 +240,13 @@ sim::DrillingScenario make_drilling_scenario(const CLI::App& app, const Scenario
   s.depth.present = !o.no_depth;
   if (given(app, "--depth-noise")) s.depth.sigma_m = o.depth_noise;
   if (given(app, "--depth-step")) s.depth.quantum_m = o.depth_step;
+  if (given(app, "--circulation-temp")) {
+    const auto parts = split(o.circulation_temp, ':');
+    require(parts.size() == 2, "--circulation-temp: expected MUD_C:FORMATION_C, got '" + o.circulation_temp + "'");
+    s.temperature.enabled = true;
+    s.temperature.circulating_c = s.temperature.start_c = option_number("--circulation-temp", parts[0]);
+    s.temperature.formation_c = option_number("--circulation-temp", parts[1]);
+  }
   s.vibration.lateral_rms = o.vibration_rms;
   s.vibration.frequency_hz = o.vibration_hz;
   s.vibration.band_hz = o.vibration_band;
@@ -256,7 +267,7 @@ sim::WalkScenario make_walk_scenario(const CLI::App& app, const ScenarioOptions&
                              "--snr-accel", "--snr-mag", "--sigma-accel", "--sigma-gyro", "--accel-scale",
                              "--accel-bias-temp", "--mag-bias", "--mag-scale", "--mag-bias-temp", "--gyro-scale",
                              "--temp", "--no-gyro", "--vibration", "--vibration-hz", "--shock-rate", "--shock-peak",
-                             "--mag-disturbance", "--no-depth", "--depth-noise", "--depth-step"})
+                             "--mag-disturbance", "--no-depth", "--depth-noise", "--depth-step", "--circulation-temp"})
     require(!given(app, option), std::string(option) + " does not apply to --scenario walk");
   sim::ImuGrade grade;
   try {

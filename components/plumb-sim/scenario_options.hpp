@@ -38,6 +38,7 @@ struct ScenarioOptions {
   bool no_mag = false, no_depth = false;
   double depth_noise = 0, depth_step = 0;
   std::vector<std::string> mag_disturbances;  // STOP:DELTA_UT:DELTA_DIP_DEG
+  std::string circulation_temp;               // MUD_C:FORMATION_C (drilling: the tool's temperature)
   // Walks only.
   double walk_length = 25, walk_climb = 0;
 };

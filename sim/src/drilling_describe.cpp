@@ -34,6 +34,9 @@ std::string describe(const DrillingScenario& s) {
     out << "vibration " << describe(s.vibration) << "; ";
   if (s.vibration.shock_rate_hz > 0 && s.vibration.shock_peak != 0)
     out << "shocks " << s.vibration.shock_peak << " m/s2 at " << s.vibration.shock_rate_hz << " /s; ";
+  if (s.temperature.enabled)
+    out << "tool temperature " << s.temperature.circulating_c << " degC circulating, " << s.temperature.formation_c
+        << " degC at stops (tau " << s.temperature.cool_tau_s << " / " << s.temperature.heat_tau_s << " s); ";
   out << "seed " << s.seed;
   return out.str();
 }

@@ -90,6 +90,16 @@ void validate(const DrillingScenario& s, std::size_t stop_count) {
   require_drilling(std::isfinite(v.shock_peak) && std::isfinite(v.shock_duration_s) && v.shock_duration_s > 0,
           "shock peak and duration must be finite, duration > 0");
   require_drilling(s.tool_id.size() <= 31, "tool id: at most 31 characters");
+  const ToolTemperature& temp = s.temperature;
+  require_drilling(std::isfinite(temp.circulating_c) && std::isfinite(temp.formation_c) && std::isfinite(temp.start_c),
+                   "tool temperatures must be finite");
+  require_drilling(std::isfinite(temp.heat_tau_s) && temp.heat_tau_s > 0 && std::isfinite(temp.cool_tau_s) &&
+                       temp.cool_tau_s > 0,
+                   "tool temperature time constants must be > 0 s");
+  require_drilling(finite_nonneg(temp.sensor_sigma_c) && finite_nonneg(temp.sensor_quantum_c),
+                   "temperature sensor noise and step must be >= 0 degC");
+  require_drilling(std::isfinite(s.grade.gyro_bias_temp_dph_per_c) && std::isfinite(s.grade.accel_bias_temp_mg_per_c),
+                   "IMU grade '" + s.grade.name + "': temperature coefficients must be finite");
 }
 
 }  // namespace detail

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -27,6 +29,18 @@ double heave_phase(std::uint64_t seed) {
 // noise sequence of the others.
 constexpr std::uint64_t kVibrationStream = 0x9e3779b97f4a7c15ULL;
 constexpr std::uint64_t kMagnetizationStream = 0xbf58476d1ce4e5b9ULL;
+constexpr std::uint64_t kTemperatureSensorStream = 0xd6e8feb86659fd93ULL;
+
+// Mud circulates while the string drills (every moving phase, ramps included) and stops otherwise.
+TemperatureHistory history_of(const ToolTemperature& model, const DrillingTrajectory& trajectory) {
+  std::vector<double> starts;
+  std::vector<bool> circulating;
+  for (const auto& phase : trajectory.phases()) {
+    starts.push_back(phase.t0);
+    circulating.push_back(phase.moving);
+  }
+  return TemperatureHistory(model, std::move(starts), std::move(circulating));
+}
 
 }  // namespace
 
@@ -36,8 +50,10 @@ DrillingSimulator::DrillingSimulator(const DrillingScenario& scenario)
       imu_(scenario.grade, scenario.sample_rate_hz, scenario.seed, scenario.gyro_bias, scenario.accel_bias,
            scenario.earth_rate, scenario.latitude_deg),
       rng_(scenario.seed),
-      vib_rng_(scenario.seed ^ kVibrationStream) {
+      vib_rng_(scenario.seed ^ kVibrationStream),
+      temp_rng_(scenario.seed ^ kTemperatureSensorStream) {
   detail::validate(scenario_, trajectory_.stop_count());
+  if (scenario_.temperature.enabled) temperature_ = history_of(scenario_.temperature, trajectory_);
 
   const auto& v = scenario_.vibration;
   tones_ = VibrationTones(v, vib_rng_);
@@ -58,6 +74,10 @@ bool DrillingSimulator::done() const { return index_ >= sample_count(); }
 
 double DrillingSimulator::time_of(std::size_t index) const {
   return static_cast<double>(index) / scenario_.sample_rate_hz;
+}
+
+double DrillingSimulator::temperature_at(double t) const {
+  return scenario_.temperature.enabled ? temperature_.at(t) : scenario_.temperature.start_c;
 }
 
 Eigen::Vector3d DrillingSimulator::field_at(const DrillingState& st) const {
@@ -87,7 +107,17 @@ Sample DrillingSimulator::next(TruthSample* truth) {
   Sample out;
   out.seq = index_;
   out.t = t;
-  imu_.measure(st.w_nb, st.c_nb, st.acceleration, st.velocity, scenario_.g, vibration, n_w, n_a, out);
+  const ToolTemperature& temp = scenario_.temperature;
+  const double temp_c = temperature_at(t);
+  imu_.measure(st.w_nb, st.c_nb, st.acceleration, st.velocity, scenario_.g, vibration, n_w, n_a, out,
+               temp_c - temp.start_c);
+  if (temp.enabled) {
+    // A distribution of its own: normal_ keeps a spare draw of the noise stream.
+    double reading = temp_c + temp.sensor_sigma_c * std::normal_distribution<double>(0.0, 1.0)(temp_rng_);
+    if (temp.sensor_quantum_c > 0) reading = temp.sensor_quantum_c * std::round(reading / temp.sensor_quantum_c);
+    out.temp_c = reading;
+    out.flags |= flags::kHasTemperature;
+  }
   if (scenario_.magnetometer.present) {
     out.b = field_at(st) + scenario_.magnetometer.sigma_uT * n_m + Eigen::Vector3d(0.0, 0.0, axial_bias_uT_);
   }

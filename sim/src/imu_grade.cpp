@@ -14,7 +14,8 @@ namespace {
 constexpr double kSecondsPerHour = 3600.0;
 constexpr double kMilliG = 9.80665e-3;  // m/s^2, standard gravity / 1000
 
-ImuGrade make(const char* name, double gyro_bias, double arw, double accel_bias, double vrw, double range) {
+ImuGrade make(const char* name, double gyro_bias, double arw, double accel_bias, double vrw, double range,
+              double gyro_temp = 0, double accel_temp = 0) {
   ImuGrade g;
   g.name = name;
   g.gyro_bias_deg_h = gyro_bias;
@@ -22,17 +23,23 @@ ImuGrade make(const char* name, double gyro_bias, double arw, double accel_bias,
   g.accel_bias_mg = accel_bias;
   g.accel_vrw_mps_rt_h = vrw;
   g.gyro_range_deg_s = range;
+  g.gyro_bias_temp_dph_per_c = gyro_temp;
+  g.accel_bias_temp_mg_per_c = accel_temp;
   return g;
 }
 
 }  // namespace
 
+// The temperature coefficients are the residuals a datasheet states after the part's own
+// compensation: a few thousandths of a deg/h and of a mg per degC for navigation-grade parts;
+// 0.05 deg/h/degC for a survey tool's fibre-optic gyro and 10 ug/degC for a quartz accelerometer;
+// 0.2 deg/h/degC and 0.05 mg/degC for an industrial MEMS unit (the order of ADIS1649x-class sheets).
 // Ring-laser / high-end fibre-optic gyros and servo accelerometers: enough to gyrocompass.
-ImuGrade ImuGrade::navigation() { return make("navigation", 0.01, 0.002, 0.025, 0.005, 500); }
+ImuGrade ImuGrade::navigation() { return make("navigation", 0.01, 0.002, 0.025, 0.005, 500, 0.002, 0.002); }
 // Fibre-optic gyros and quartz accelerometers of gyro survey and MWD tools.
-ImuGrade ImuGrade::tactical() { return make("tactical", 1.0, 0.05, 0.3, 0.03, 1000); }
+ImuGrade ImuGrade::tactical() { return make("tactical", 1.0, 0.05, 0.3, 0.03, 1000, 0.05, 0.01); }
 // Industrial MEMS (the source's class of sensor).
-ImuGrade ImuGrade::mems() { return make("mems", 10.0, 0.3, 2.0, 0.06, 2000); }
+ImuGrade ImuGrade::mems() { return make("mems", 10.0, 0.3, 2.0, 0.06, 2000, 0.2, 0.05); }
 ImuGrade ImuGrade::perfect() { return make("perfect", 0, 0, 0, 0, 0); }
 
 ImuGrade ImuGrade::named(const std::string& name) {
@@ -49,6 +56,10 @@ double ImuGrade::accel_bias_sigma() const { return accel_bias_mg * kMilliG; }
 
 // A density per sqrt(hour) is density / 60 per sqrt(second); white noise of that density sampled
 // every dt has sigma = density / sqrt(dt).
+double ImuGrade::gyro_bias_temp() const { return gyro_bias_temp_dph_per_c * kDeg / kSecondsPerHour; }
+
+double ImuGrade::accel_bias_temp() const { return accel_bias_temp_mg_per_c * kMilliG; }
+
 double ImuGrade::gyro_noise_sigma(double dt) const {
   return gyro_arw_deg_rt_h * kDeg / std::sqrt(kSecondsPerHour) / std::sqrt(dt);
 }

@@ -130,7 +130,8 @@ TEST(PlumbSimDrillingOptions, ScenarioGradeAndOverrides) {
   std::vector<std::string> args{"--scenario", "drilling", "--grade", "mems", "--rate-hz", "10", "--seed", "4",
                                 "--latitude", "50", "--sigma-mag", "0.2", "--mag-disturbance", "1:1:0.5",
                                 "--mag-disturbance", "3:-2:0", "--depth-noise", "0.01", "--depth-step", "0.05",
-                                "--gyro-bias", "1e-5,0,-1e-5", "--gyro-range", "400", "--inclination", "88"};
+                                "--gyro-bias", "1e-5,0,-1e-5", "--gyro-range", "400", "--inclination", "88",
+                                "--circulation-temp", "55:95"};
   std::reverse(args.begin(), args.end());
   app.parse(args);
   ASSERT_TRUE(is_drilling(options));
@@ -148,6 +149,11 @@ TEST(PlumbSimDrillingOptions, ScenarioGradeAndOverrides) {
   EXPECT_EQ(s.depth.quantum_m, 0.05);
   EXPECT_EQ(*s.gyro_bias, Eigen::Vector3d(1e-5, 0, -1e-5));
   EXPECT_EQ(s.plan.inclination_deg, 88.0);
+  EXPECT_TRUE(s.temperature.enabled);
+  EXPECT_EQ(s.temperature.circulating_c, 55.0);
+  EXPECT_EQ(s.temperature.start_c, 55.0);
+  EXPECT_EQ(s.temperature.formation_c, 95.0);
+  EXPECT_FALSE(sim::DrillingScenario().temperature.enabled);
   EXPECT_EQ(s.plan.segments.size(), sim::DrillingScenario::reference(s.grade).plan.segments.size());
   EXPECT_EQ(s.duration_s(), 960.0);
 }
@@ -164,6 +170,8 @@ TEST(PlumbSimDrillingOptions, OptionsOfTheOtherKindAreRefusedByName) {
                                          {{"--scenario", "drilling", "--mag-disturbance", "9:1:0"}, "stop 9"},
                                          {{"--scenario", "drilling", "--mag-disturbance", "1:1"}, "--mag-disturbance"},
                                          {{"--scenario", "drilling", "--gyro-range", "0"}, "--gyro-range"},
+                                         {{"--scenario", "drilling", "--circulation-temp", "60"}, "--circulation-temp"},
+                                         {{"--circulation-temp", "60:90"}, "--circulation-temp"},
                                          {{"--grade", "mems"}, "--grade"},
                                          {{"--no-mag"}, "--no-mag"}}) {
     CLI::App app;

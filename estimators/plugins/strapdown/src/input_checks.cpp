@@ -100,6 +100,9 @@ InputChecks::Verdict InputChecks::accept(const Sample& s, InputReading& in, Coun
   // (No bx,by,bz columns, or a tool without magnetometers.)
   verdict.first_without_field = !last_t_ && !in.b;
   if ((s.flags & flags::kHasDepth) != 0 && std::isfinite(s.depth_m)) in.depth = s.depth_m;
+  if ((s.flags & (flags::kHasTemperature | flags::kTemperatureOutOfRange)) == flags::kHasTemperature &&
+      std::isfinite(s.temp_c))
+    in.temp_c = s.temp_c;
   if (last_t_) {
     const double dt = s.t - *last_t_;
     const bool lost = lost_samples(dt);

@@ -17,7 +17,7 @@ void Navigator::reset() {
   counters_.clear();
   for (const char* name :
        {"samples", "accepted", "non_finite", "time_backwards", "repeated_time", "no_gyro", "gyro_saturated",
-        "accel_saturated", "mag_unusable", "out_of_range", "gaps", "dropouts", "missing_samples", "repeated_samples", "accel_clipped", "gyro_clipped", "accel_in_g", "still_periods",
+        "accel_saturated", "mag_unusable", "out_of_range", "gaps", "dropouts", "missing_samples", "repeated_samples", "accel_clipped", "gyro_clipped", "accel_in_g", "temperature_readings", "temperature_corrected", "still_periods",
         "zero_velocity_updates", "zero_rate_updates", "tilt_updates", "azimuth_updates", "disturbed_field",
         "lateral_velocity_updates", "axial_acceleration_updates", "depth_updates", "tally_updates", "stops_not_connections", "rows", "invalid_rows"}) {
     counters_[name] = 0;
@@ -37,6 +37,7 @@ void Navigator::reset() {
   unseen_.reset(config_);
   faults_.reset();
   ranges_.reset(config_);
+  temperature_.reset(config_);
 }
 
 std::vector<std::string> Navigator::take_notices() {
@@ -44,6 +45,7 @@ std::vector<std::string> Navigator::take_notices() {
   for (std::string& n : unseen_.take_notices()) notices.push_back(std::move(n));
   for (std::string& n : faults_.take_notices()) notices.push_back(std::move(n));
   for (std::string& n : ranges_.take_notices()) notices.push_back(std::move(n));
+  for (std::string& n : temperature_.take_notices()) notices.push_back(std::move(n));
   return notices;
 }
 
@@ -65,7 +67,10 @@ void Navigator::push(const Sample& s, std::vector<Estimate>& out) {
   }
   if (verdict.repeated) faults_.repeat(s.t, verdict.same_stamp);
   if (verdict.lost_dt > 0) faults_.lost(s.t, verdict.lost_dt, checks_.dt_nominal(), counters_);
-  if (verdict.navigable) ranges_.seen(in);
+  if (verdict.navigable) {
+    ranges_.seen(in);
+    temperature_.correct(in, counters_);
+  }
   if (!verdict.navigable) {
     if (!aligned_ && checks_.last_t()) emit(*checks_.last_t(), out);
     return;
@@ -196,8 +201,10 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
   ranges_.add_to(unseen);
   faults_.add_to(unseen);
   const FilterState::Prediction prediction =
-      filter_.predict(faults_.widen(stops_.process_noise(filter_.noise(), still_state_, filter_.drilling_tool()),
-                                    in.t - last_epoch_t_),
+      filter_.predict(temperature_.widen(faults_.widen(stops_.process_noise(filter_.noise(), still_state_,
+                                                                            filter_.drilling_tool()),
+                                                       in.t - last_epoch_t_),
+                                         in.t - last_epoch_t_),
                       unseen);
   last_epoch_t_ = in.t;
   stops_.at_epoch(filter_, prediction, still_state_, in.t, checks_.dt_nominal(), watch_.depth_sd(), watch_.depth_tolerance(),
@@ -236,6 +243,8 @@ RowContext Navigator::row_context() const {
   c.field_warning = stops_.field_warning();
   c.motion_warning = unseen_.row_warning();
   c.range_warning = ranges_.row_warning();
+  if (std::string temperature = temperature_.row_warning(); !temperature.empty())
+    c.range_warning += (c.range_warning.empty() ? "" : "; ") + temperature;
   if (aligner_.use_mag() && aligner_.field().dip) {
     // Magnetic north lies at the declination in a true frame, at 0 in a magnetic one.
     const double dip = *aligner_.field().dip, d = config_.declination.value_or(0.0);

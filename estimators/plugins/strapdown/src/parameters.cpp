@@ -25,10 +25,11 @@ struct Grade {
   const char* name;
   double gyro_bias_dph, gyro_arw, accel_bias_mg, accel_vrw, gyro_scale_ppm, gyro_misalignment_mrad, gyro_g_dph_g, accel_scale_ppm, accel_misalignment_mrad;
   double gyro_range_dps, accel_range_g;  // the class's usual ranges (the simulator's gyro ranges)
+  double gyro_temp_dph_c, accel_temp_mg_c;  // typical bias temperature coefficients (the simulator's)
 };
-constexpr Grade kGrades[] = {{"navigation", 0.01, 0.002, 0.025, 0.005, 5, 0.02, 0.1, 20, 0.02, 500, 25},
-                             {"tactical", 1.0, 0.05, 0.3, 0.03, 100, 0.1, 1, 100, 0.1, 1000, 40},
-                             {"mems", 10.0, 0.3, 2.0, 0.06, 1000, 1.0, 10, 500, 0.5, 2000, 16}};
+constexpr Grade kGrades[] = {{"navigation", 0.01, 0.002, 0.025, 0.005, 5, 0.02, 0.1, 20, 0.02, 500, 25, 0.002, 0.002},
+                             {"tactical", 1.0, 0.05, 0.3, 0.03, 100, 0.1, 1, 100, 0.1, 1000, 40, 0.05, 0.01},
+                             {"mems", 10.0, 0.3, 2.0, 0.06, 1000, 1.0, 10, 500, 0.5, 2000, 16, 0.2, 0.05}};
 
 std::optional<double> optional_number(const estimator::ParameterReader& reader, const estimator::Parameters& given,
                                       const std::string& name, double min, double max) {
@@ -143,6 +144,10 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"gyro_range_dps", "", "gyro range, +- on each axis (deg/s, datasheet); a reading at or beyond it is clipped, as for the accelerometers; empty: the grade's (navigation 500, tactical 1000, mems 2000)"},
       {"accel_shock_max_g", "0", "the largest acceleration the tool meets (g, its shock rating or the string's shock log): a clipped accelerometer reading may hide up to this less the range, added to the velocity's process noise; 0: not added (clipped readings are still counted, noticed and said on the rows: on the simulator's rebounding 30 g shocks the added noise made the attitude's sigma worse, docs/navigator.md)"},
       {"gyro_rate_max_dps", "3000", "the fastest the tool turns (deg/s; stick-slip's slip phase reaches 2-3 times the string's mean speed): a clipped gyro reading may hide up to this less the range"},
+      {"gyro_bias_temp_dph_per_c", "0", "gyro bias temperature coefficient (deg/h per degC, datasheet; the same on every axis): readings that carry the tool's temperature are corrected by it times the change since the first reading, and what it is not known to (bias_temp_sd) widens the bias's sigma as the temperature changes; 0: not known, the readings stay as they are and the grade's typical coefficient (navigation 0.002, tactical 0.05, mems 0.2) widens the sigma instead, said in a notice"},
+      {"accel_bias_temp_mg_per_c", "0", "accelerometer bias temperature coefficient (mg per degC, datasheet), as for the gyros; 0: not known (the grade's typical navigation 0.002, tactical 0.01, mems 0.05 widens the sigma)"},
+      {"bias_temp_sd", "0.3", "how well the stated temperature coefficients are known, 1 sigma as a fraction of them (a datasheet's typical value: parts spread about it by some 20-30 %)"},
+      {"use_temperature", "1", "use the tool's temperature on the readings that carry it (the correction and the bias's widening above; 0: ignore it)"},
       {"gyro_time_offset_s", "0", "gyro readings were measured this long after their time stamp (s)"},
       {"notice_after_s", "60", "data without alignment this long: the log says once which stillness test fails and what to change (s)"},
       {"no_stop_notice_s", "3600", "aligned, but no still period this long: the log says so once (s)"},
@@ -257,6 +262,12 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   c.smooth = r.boolean("smooth");
   c.max_gap_s = r.number("max_gap_s", 1e-6, 1e6);
   c.gyro_time_offset_s = r.number("gyro_time_offset_s", -1, 1);
+  c.gyro_bias_temp = r.number("gyro_bias_temp_dph_per_c", -1e3, 1e3) * kDegPerHour;
+  c.accel_bias_temp = r.number("accel_bias_temp_mg_per_c", -1e3, 1e3) * kMilliG;
+  c.bias_temp_sd = r.number("bias_temp_sd", 0, 10);
+  c.default_gyro_bias_temp = grade->gyro_temp_dph_c * kDegPerHour;
+  c.default_accel_bias_temp = grade->accel_temp_mg_c * kMilliG;
+  c.use_temperature = r.boolean("use_temperature");
   c.notice_after_s = r.number("notice_after_s", 0, 1e7);
   c.no_stop_notice_s = r.number("no_stop_notice_s", 0, 1e7);
   return c;

@@ -26,6 +26,7 @@
 #include "plumb/core/sample.hpp"
 #include "plumb/sim/imu_model.hpp"
 #include "plumb/sim/platform.hpp"
+#include "plumb/sim/tool_temperature.hpp"
 
 namespace plumb::sim {
 
@@ -106,6 +107,9 @@ struct DrillingScenario {
   MagnetometerModel magnetometer;
   DepthModel depth;
   Vibration vibration;           // lateral, added to f while drilling only, scaled by the speed ramp
+  // The tool heating at stops and cooling while mud circulates, and the biases following it
+  // (tool_temperature.hpp). Off: no temperature on the samples, constant biases.
+  ToolTemperature temperature;
   std::uint64_t seed = 1;
 
   // The navigator's accuracy case: 16 min = 60 s alignment, then four drilling segments of 165 s
@@ -186,6 +190,11 @@ class DrillingSimulator {
   const DrillingTrajectory& trajectory() const { return trajectory_; }
   const Eigen::Vector3d& gyro_bias() const { return imu_.gyro_bias(); }    // the biases in use (truth)
   const Eigen::Vector3d& accel_bias() const { return imu_.accel_bias(); }
+  // With the tool's temperature simulated: the true temperature at t (degC; the start's without),
+  // and the run's drawn coefficients (rad/s and m/s^2 per degC): bias(t) = bias() + k (T(t) - T(0)).
+  double temperature_at(double t) const;
+  const Eigen::Vector3d& gyro_bias_temp() const { return imu_.gyro_bias_temp(); }
+  const Eigen::Vector3d& accel_bias_temp() const { return imu_.accel_bias_temp(); }
   std::size_t index() const { return index_; }
 
  private:
@@ -199,6 +208,8 @@ class DrillingSimulator {
   std::size_t index_ = 0;
   std::mt19937_64 rng_;        // sensor noise
   std::mt19937_64 vib_rng_;    // vibration: separate, so the noise does not depend on it
+  std::mt19937_64 temp_rng_;   // the temperature sensor's noise: separate, for the same reason
+  TemperatureHistory temperature_;
   std::normal_distribution<double> normal_{0.0, 1.0};
   VibrationTones tones_;
   double shock_until_ = -1, shock_start_ = 0, shock_dir_ = 0, shock_drive_ = 0, next_shock_ = 0;

@@ -30,6 +30,7 @@
 #include "plumb/strapdown/sensor_range.hpp"
 #include "plumb/strapdown/stop_updates.hpp"
 #include "plumb/strapdown/stream_faults.hpp"
+#include "plumb/strapdown/temperature_drift.hpp"
 #include "plumb/strapdown/unseen_motion.hpp"
 
 namespace plumb::strapdown {
@@ -98,6 +99,7 @@ class Navigator {
   UnseenMotion unseen_;
   StreamFaults faults_;
   SensorRange ranges_;
+  TemperatureDrift temperature_;
 };
 
 }  // namespace plumb::strapdown

@@ -20,6 +20,7 @@ struct InputReading {
   std::optional<Eigen::Vector3d> b;
   double b_norm = 0;  // |b|, when there is b
   std::optional<double> depth;
+  std::optional<double> temp_c;  // the tool's temperature (degC), when the sample carries it
   bool gyro_bad = false;  // saturated: the rate is the last good one
   bool accel_bad = false;
   // Axes read at or beyond the sensor's range: bits 0-2 the accelerometers x, y, z, bits 3-5 the

@@ -119,6 +119,15 @@ struct NavigatorConfig {
   double accel_shock_max = 0;              // m/s^2; 0: a clipped accelerometer adds no process noise
   double gyro_rate_max = 3000 * 3.14159265358979323846 / 180.0;  // rad/s
   double gyro_time_offset_s = 0;       // gyro stamps lag the true gyro time by this (s)
+  // The biases' temperature coefficients (datasheet; rad/s and m/s^2 per degC; 0: not known), how
+  // well they are known (1 sigma, a fraction of them), the grade's typical ones (the uncertainty
+  // when not known), and whether readings that carry a temperature are used for it
+  // (temperature_drift.hpp).
+  double gyro_bias_temp = 0, accel_bias_temp = 0;
+  double bias_temp_sd = 0.3;
+  double default_gyro_bias_temp = 0.05 * 3.14159265358979323846 / 180.0 / 3600.0;
+  double default_accel_bias_temp = 0.01 * 9.80665e-3;
+  bool use_temperature = true;
 };
 
 }  // namespace plumb::strapdown
