@@ -112,10 +112,13 @@ inline double axis_error_deg(const Estimate& e, const TruthSample& tr) {
   return std::atan2(est.cross(truth).norm(), est.dot(truth)) / kDeg;
 }
 
-// Runs the navigator over samples and scores its rows against the truth.
+// Runs the navigator over samples and scores its rows against the truth. A row is the truth's at
+// its stamp times the rate, or, where the stamps are not the true instants (a logger's clock), at
+// the true index of the sample that bears its stamp (truth_index_of_stamp).
 inline RunMetrics score_drilling(const std::vector<Sample>& samples, const std::vector<TruthSample>& truth,
                                  double rate, double drilled_m, const estimator::Parameters& params,
-                                 std::map<std::string, std::uint64_t>* counters = nullptr);
+                                 std::map<std::string, std::uint64_t>* counters = nullptr,
+                                 const std::map<double, std::size_t>* truth_index_of_stamp = nullptr);
 
 inline RunMetrics run_drilling(const sim::DrillingScenario& scenario, const estimator::Parameters& params,
                                bool use_depth = true, std::map<std::string, std::uint64_t>* counters = nullptr) {
@@ -131,7 +134,8 @@ inline RunMetrics run_drilling(const sim::DrillingScenario& scenario, const esti
 
 inline RunMetrics score_drilling(const std::vector<Sample>& samples, const std::vector<TruthSample>& truth,
                                  double rate, double drilled_m, const estimator::Parameters& params,
-                                 std::map<std::string, std::uint64_t>* counters) {
+                                 std::map<std::string, std::uint64_t>* counters,
+                                 const std::map<double, std::size_t>* truth_index_of_stamp) {
   Navigator nav(parse_parameters(params));
   std::vector<Estimate> rows;
   for (const Sample& s : samples) nav.push(s, rows);
@@ -144,7 +148,8 @@ inline RunMetrics score_drilling(const std::vector<Sample>& samples, const std::
   for (const Estimate& e : rows) {
     if (!e.valid || !e.navigation) continue;
     ++m.valid_rows;
-    const auto k = static_cast<std::size_t>(std::llround(e.t_end * rate));
+    const auto k = truth_index_of_stamp != nullptr ? truth_index_of_stamp->at(e.t_end)
+                                                   : static_cast<std::size_t>(std::llround(e.t_end * rate));
     const TruthSample& tr = truth[std::min(k, truth.size() - 1)];
     const double di = e.inclination_deg - tr.inclination_deg;
     const double da = wrap_deg_180(e.azimuth_deg - tr.azimuth_deg);

@@ -30,6 +30,8 @@ struct Family {
   std::function<void(std::uint64_t seed, sim::DrillingScenario&)> scenario = [](std::uint64_t, sim::DrillingScenario&) {};
   std::function<void(std::uint64_t seed, std::vector<Sample>&, estimator::Parameters&)> input =
       [](std::uint64_t, std::vector<Sample>&, estimator::Parameters&) {};
+  // The input's stamps are not the true instants: rows are scored at their sample's (its seq).
+  bool restamped = false;
 };
 
 inline FamilyResult sweep(const char* name, const sim::ImuGrade& grade, double rate, const Family& family) {
@@ -46,7 +48,12 @@ inline FamilyResult sweep(const char* name, const sim::ImuGrade& grade, double r
     std::vector<TruthSample> truth;
     std::vector<Sample> samples = simulator.run(&truth);
     family.input(seed, samples, params);
-    const RunMetrics m = score_drilling(samples, truth, rate, simulator.trajectory().drilled_length_m(), params);
+    std::map<double, std::size_t> truth_index;
+    if (family.restamped) {
+      for (const Sample& x : samples) truth_index.emplace(x.t, static_cast<std::size_t>(x.seq));
+    }
+    const RunMetrics m = score_drilling(samples, truth, rate, simulator.trajectory().drilled_length_m(), params,
+                                        nullptr, family.restamped ? &truth_index : nullptr);
     att_z2 += m.sum_z2;
     att_n += m.n_z;
     for (int a = 0; a < 3; ++a) {

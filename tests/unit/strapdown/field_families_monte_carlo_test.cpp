@@ -6,13 +6,17 @@
 // position within 1 % of MD. What is not met yet is bounded at its measured level (said where).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <map>
 #include <optional>
 #include <random>
 #include <string>
 #include <tuple>
 
 #include "families_support.hpp"
+#include "plumb/sim/logger_clock.hpp"
 #include "plumb/sim/logger_faults.hpp"
 
 namespace plumb::strapdown::test {
@@ -320,6 +324,100 @@ TEST(StrapdownFieldFamilies, StampJitterIsNoDropout) {
     for (const Sample& x : fed) nav.push(x, rows);
     nav.flush(rows);
     EXPECT_EQ(nav.counters().at("dropouts"), with_dropouts ? log.gaps.size() : 0u);
+  }
+}
+
+// A logger's clock: stamps with 1 ms of white jitter that run 50 ppm fast (odd seeds) or slow
+// (even ones), the readings those of the true instants. Scored at each row's true instant.
+Family logger_clock() {
+  Family family;
+  family.input = [](std::uint64_t seed, std::vector<Sample>& s, estimator::Parameters&) {
+    sim::LoggerClock clock;
+    clock.stamp_jitter_s = 1e-3;
+    clock.clock_drift_ppm = seed % 2 == 1 ? 50.0 : -50.0;
+    s = sim::through_logger_clock(s, clock, seed);
+  };
+  family.restamped = true;
+  return family;
+}
+
+// Met at 100 Hz, both grades, and at 400 Hz, tactical (docs/navigator.md, "The logger's clock").
+// At 400 Hz the jitter is 40 % of the interval, stamps fall out of order and are taken as stamped,
+// the toolface's sigma widened by their measured jitter. Not met, and not run here to keep the
+// family's time: MEMS at 400 Hz, tool axis 0.54 deg (the same with the stamps' jitter ignored).
+TEST(StrapdownFieldFamilies, LoggerClock) {
+  for (const auto& [rate, grade] : {std::tuple{100.0, sim::ImuGrade::tactical()}, std::tuple{100.0, sim::ImuGrade::mems()},
+                                    std::tuple{400.0, sim::ImuGrade::tactical()}}) {
+    char name[64];
+    std::snprintf(name, sizeof name, "logger's clock, %.0f Hz, %s", rate, grade.name.c_str());
+    const FamilyResult f = sweep(name, grade, rate, logger_clock());
+    expect_field_targets(f, grade.name, grade.name == "mems" ? 0.5 : 0.2);
+  }
+}
+
+// A clock 50 ppm fast or slow is a scale on every step: the gyros' angle comes out 50 ppm long or
+// short, as from a gyro scale-factor error (a turning tool's toolface off by 50 ppm of the angle
+// turned since the last stop: 0.04 rad over a 133 s segment at 60 rpm, before the gravity takes it
+// back), and the path is the depth's, stamped by the same clock. Each row (one per sample) against
+// the same run's with a true clock, the same seed, at the same sample: the RMS change of each angle
+// over its sigma within a tenth (toolface a third), the end within a thousandth of MD.
+TEST(StrapdownFieldFamilies, ClockDriftIsHarmless) {
+  for (const auto& grade : {sim::ImuGrade::tactical(), sim::ImuGrade::mems()}) {
+    auto scenario = sim::DrillingScenario::reference(grade, 100, 6);
+    sim::DrillingSimulator simulator(scenario);
+    const std::vector<Sample> samples = simulator.run();
+    const double drilled_m = simulator.trajectory().drilled_length_m();
+    estimator::Parameters params = parameters_for(scenario);
+    params["output_rate_hz"] = "100";
+    const auto navigate = [&](const std::vector<Sample>& fed) {
+      Navigator nav(parse_parameters(params));
+      std::vector<Estimate> rows;
+      for (const Sample& x : fed) nav.push(x, rows);
+      nav.flush(rows);
+      std::map<std::size_t, Estimate> by_seq;  // valid navigation rows by their sample
+      std::map<double, std::size_t> seq_of;
+      for (const Sample& x : fed) seq_of.emplace(x.t, static_cast<std::size_t>(x.seq));
+      for (const Estimate& e : rows)
+        if (e.valid && e.navigation) by_seq.emplace(seq_of.at(e.t_end), e);
+      return by_seq;
+    };
+    const auto reference = navigate(samples);
+    for (const double ppm : {50.0, -50.0}) {
+      sim::LoggerClock clock;
+      clock.clock_drift_ppm = ppm;
+      const auto drifted = navigate(sim::through_logger_clock(samples, clock, 6));
+      double z2[3] = {0, 0, 0}, n[3] = {0, 0, 0}, worst[3] = {0, 0, 0}, end_m = 0;
+      for (const auto& [seq, e] : drifted) {
+        const auto it = reference.find(seq);
+        if (it == reference.end()) continue;
+        const Estimate& r = it->second;
+        const double change[3] = {e.inclination_deg - r.inclination_deg, wrap_deg_180(e.azimuth_deg - r.azimuth_deg),
+                                  wrap_deg_180(e.gravity_toolface_deg - r.gravity_toolface_deg)};
+        const double sd[3] = {r.inclination_sd_deg, r.azimuth_valid ? r.azimuth_sd_deg : 0.0,
+                              r.toolface_valid ? r.toolface_sd_deg : 0.0};
+        for (int a = 0; a < 3; ++a) {
+          if (!(sd[a] > 0)) continue;
+          const double z = change[a] / sd[a];
+          z2[a] += z * z;
+          n[a] += 1;
+          worst[a] = std::max(worst[a], std::abs(z));
+        }
+        const auto& p = e.navigation->position_m;
+        const auto& q = r.navigation->position_m;
+        end_m = std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+      }
+      double rms[3];
+      for (int a = 0; a < 3; ++a) rms[a] = n[a] > 0 ? std::sqrt(z2[a] / n[a]) : 0.0;
+      std::printf("clock drift %+.0f ppm, %s: %.0f rows, RMS change / sigma I %.3f A %.3f T %.3f (worst %.2f %.2f %.2f); "
+                  "end position moved %.4f m (%.4f %% of MD)\n",
+                  ppm, grade.name.c_str(), n[0], rms[0], rms[1], rms[2], worst[0], worst[1], worst[2], end_m,
+                  100 * end_m / drilled_m);
+      EXPECT_GT(n[0], 50000.0);
+      EXPECT_LT(rms[0], 0.1) << ppm << " ppm, " << grade.name;
+      EXPECT_LT(rms[1], 0.1) << ppm << " ppm, " << grade.name;
+      EXPECT_LT(rms[2], 0.33) << ppm << " ppm, " << grade.name;
+      EXPECT_LT(end_m, 1e-3 * drilled_m) << ppm << " ppm, " << grade.name;
+    }
   }
 }
 

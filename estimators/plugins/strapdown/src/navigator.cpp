@@ -110,17 +110,24 @@ void Navigator::navigate(const Input& in, const StillnessState& still, std::vect
   const double step_dt = in.t - prev_->t, dt_nominal = checks_.dt_nominal();
   const bool gap = checks_.lost_samples(step_dt);
   if (gap) rows_.note_gap(in.t);
+  // The mechanization steps between the readings' instants; everything else keeps their stamps.
+  const double prev_instant = clock_.instant();
+  Input at = in, from = *prev_;
+  at.t = clock_.next(in.t, step_dt, dt_nominal, checks_.dt_jitter(), gap);
+  from.t = prev_instant;
+  std::optional<Input> from2 = prev2_;
+  if (from2) from2->t = prev2_instant_;
   // (A drilling tool's. A foot's gaps, a few samples within a stride, are bridged as before: with
   // the allowance the short walk of tests/data/walks ended 0.176 m off instead of 0.138 m.)
   if (gap && filter_.drilling_tool()) {
     faults_.bridge(*prev_, in, dt_nominal, filter_.state().q.toRotationMatrix());
     // The gap's step starts from the force's recent mean, not from one reading's vibration (a
     // foot's force over a tenth of a second is its stride).
-    Input before = *prev_;
+    Input before = from;
     before.f = faults_.recent_force();
-    filter_.step(before, in, nullptr, config_.samples_are_means, dt_nominal);
+    filter_.step(before, at, nullptr, config_.samples_are_means, dt_nominal);
   } else {
-    filter_.step(*prev_, in, prev2_ ? &*prev2_ : nullptr, config_.samples_are_means, checks_.dt_nominal());
+    filter_.step(from, at, from2 ? &*from2 : nullptr, config_.samples_are_means, checks_.dt_nominal());
   }
   faults_.observe(in, step_dt, dt_nominal);
   if (in.clipped != 0) ranges_.integrate(in, step_dt, filter_.state().q.toRotationMatrix());
@@ -138,6 +145,7 @@ void Navigator::navigate(const Input& in, const StillnessState& still, std::vect
     prev2_.reset();
   } else {
     prev2_ = prev_;
+    prev2_instant_ = prev_instant;
   }
   prev_ = in;
 }
@@ -148,6 +156,7 @@ void Navigator::before_alignment(const Input& in, std::vector<Estimate>& out) {
   if (still_state_.started) count("still_periods");
   if (aligner_.take(in, still_state_)) align(in);
   prev_ = in;
+  clock_.restart(in.t);
   if (!aligned_) {
     emit(in.t, out);
   } else {
@@ -245,6 +254,7 @@ RowContext Navigator::row_context() const {
   c.range_warning = ranges_.row_warning();
   if (std::string temperature = temperature_.row_warning(); !temperature.empty())
     c.range_warning += (c.range_warning.empty() ? "" : "; ") + temperature;
+  c.measured_instant_sd_s = clock_.instant_sd(checks_.dt_nominal(), checks_.dt_jitter());
   if (aligner_.use_mag() && aligner_.field().dip) {
     // Magnetic north lies at the declination in a true frame, at 0 in a magnetic one.
     const double dip = *aligner_.field().dip, d = config_.declination.value_or(0.0);

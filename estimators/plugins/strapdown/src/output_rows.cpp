@@ -44,8 +44,9 @@ std::string OutputRows::fill_attitude(Estimate& e, const NavState& x, const Stat
   e.inclination_sd_deg = a.inclination_sd * kRadToDeg;
   e.azimuth_sd_deg = a.azimuth_sd * kRadToDeg;
   // The toolface of a turning tool is known only as well as the instant it stands for (the row's
-  // mean rate: e.rpm is filled before).
-  e.toolface_sd_deg = std::hypot(a.toolface_sd * kRadToDeg, std::abs(e.rpm) * 6.0 * config_.time_tag_sd);
+  // mean rate: e.rpm is filled before): as stated, and as the stamps' own jitter leaves it.
+  const double time_tag_sd = std::hypot(config_.time_tag_sd, context.measured_instant_sd_s);
+  e.toolface_sd_deg = std::hypot(a.toolface_sd * kRadToDeg, std::abs(e.rpm) * 6.0 * time_tag_sd);
   e.valid = true;
   e.azimuth_valid = a.azimuth_valid;
   e.toolface_valid = a.toolface_valid;
@@ -73,7 +74,8 @@ std::string OutputRows::toolface_from_north(Estimate& e, const Eigen::Matrix3d& 
       reference_toolface(c_bn, p_att, context.field_direction_n.value_or(Eigen::Vector3d::UnitX()), min_sin);
   if (context.field_direction_n && m.valid) e.magnetic_toolface_deg = m.toolface * kRadToDeg;
   if (!(inclination < config_.toolface_switch) || !m.valid) return {};
-  const double sd_deg = std::hypot(m.sd * kRadToDeg, std::abs(e.rpm) * 6.0 * config_.time_tag_sd);
+  const double time_tag_sd = std::hypot(config_.time_tag_sd, context.measured_instant_sd_s);
+  const double sd_deg = std::hypot(m.sd * kRadToDeg, std::abs(e.rpm) * 6.0 * time_tag_sd);
   if (context.field_direction_n) {
     return format("near vertical (I %.1f deg): steer by the magnetic toolface magnetic_toolface_deg (sigma %.2f deg)",
                   inclination * kRadToDeg, sd_deg);

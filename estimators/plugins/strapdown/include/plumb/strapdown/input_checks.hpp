@@ -39,6 +39,8 @@ class InputChecks {
 
   std::optional<double> last_t() const { return last_t_; }
   double dt_nominal() const { return dt_nominal_; }
+  // The steps' spread about the nominal (about their rms where the stamps jitter).
+  double dt_jitter() const { return dt_jitter_; }
   // A step this long lost samples: beyond kDropoutFactor nominal intervals and beyond what the
   // stamps' own jitter makes of one interval.
   bool lost_samples(double dt) const {

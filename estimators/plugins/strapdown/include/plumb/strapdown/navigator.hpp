@@ -25,6 +25,7 @@
 #include "plumb/strapdown/navigator_config.hpp"
 #include "plumb/strapdown/output_rows.hpp"
 #include "plumb/strapdown/stillness.hpp"
+#include "plumb/strapdown/stamp_clock.hpp"
 #include "plumb/strapdown/stillness_lag.hpp"
 #include "plumb/strapdown/stillness_watch.hpp"
 #include "plumb/strapdown/sensor_range.hpp"
@@ -86,6 +87,9 @@ class Navigator {
   // Navigation.
   bool aligned_ = false;
   std::optional<Input> prev_, prev2_;
+  // The instants the mechanization integrates prev_ and prev2_ at (their stamps, but where these jitter).
+  StampClock clock_;
+  double prev2_instant_ = 0;
   double last_epoch_t_ = 0;
   StillnessState still_state_;
   // The parts.

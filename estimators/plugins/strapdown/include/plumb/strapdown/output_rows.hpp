@@ -38,6 +38,9 @@ struct RowContext {
   // The reference field's direction in the navigation frame, when the magnetometer serves azimuth:
   // the magnetic toolface comes from it (else the gyro toolface, from north).
   std::optional<Eigen::Vector3d> field_direction_n;
+  // How far the instants the readings are integrated at stray from the true ones as measured from
+  // the stamps (stamp_clock.hpp), s: with time_tag_sd_s, what a turning tool's toolface is unsure by.
+  double measured_instant_sd_s = 0;
 };
 
 class OutputRows {
