@@ -22,7 +22,7 @@ std::shared_ptr<Transport> load_transport(const std::string& requested) {
   const std::string name = resolve_transport_name(requested);
   try {
     const plugin::Found found = plugin::locate(kTransportPlugins, name);
-    const auto* entry = static_cast<const plumb_transport_plugin*>(plugin::open(kTransportPlugins, found));
+    const auto* entry = plugin::open<plumb_transport_plugin>(kTransportPlugins, found);
     if (entry->create == nullptr) throw plugin::Error(found.path, "has no create function");
     Transport* transport = entry->create();
     if (transport == nullptr) throw plugin::Error(found.path, "failed to start");

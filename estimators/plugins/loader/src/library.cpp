@@ -97,7 +97,7 @@ Found locate(const Kind& kind, const std::string& name) {
   return *it;
 }
 
-const void* open(const Kind& kind, const Found& plugin) {
+void* open_entry_point(const Kind& kind, const Found& plugin) {
   // One lock: dlerror() is per thread, but concurrent loads of one library should not interleave
   // their checks either.
   static std::mutex mutex;
@@ -108,10 +108,12 @@ const void* open(const Kind& kind, const Found& plugin) {
     const char* why = dlerror();
     throw Error(plugin.path, std::string("could not be loaded: ") + (why != nullptr ? why : "dlopen failed"));
   }
-  using Entry = const void* (*)();
-  auto entry = reinterpret_cast<Entry>(dlsym(handle, kind.entry_point));
+  void* entry = dlsym(handle, kind.entry_point);
   if (entry == nullptr) throw Error(plugin.path, std::string("has no ") + kind.entry_point + " entry point");
-  const void* result = entry();
+  return entry;
+}
+
+void check_abi(const Kind& kind, const Found& plugin, const void* result) {
   if (result == nullptr) throw Error(plugin.path, std::string(kind.entry_point) + " returned nothing");
   // Every plugin struct starts with its ABI string (library.hpp).
   const char* abi = *static_cast<const char* const*>(result);
@@ -119,7 +121,6 @@ const void* open(const Kind& kind, const Found& plugin) {
     throw Error(plugin.path, "has ABI version " + std::string(abi ? abi : "none") + ", this program needs " + kind.abi +
                                  ": it was built against other interface headers; rebuild it");
   }
-  return result;
 }
 
 }  // namespace plumb::plugin

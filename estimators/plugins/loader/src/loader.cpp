@@ -6,7 +6,7 @@ namespace plumb::estimator {
 namespace {
 
 const plumb_estimator_plugin* open_estimator(const plugin::Found& found) {
-  const auto* entry = static_cast<const plumb_estimator_plugin*>(plugin::open(kEstimatorPlugins, found));
+  const auto* entry = plugin::open<plumb_estimator_plugin>(kEstimatorPlugins, found);
   if (entry->create == nullptr || entry->destroy == nullptr) throw plugin::Error(found.path, "plugin has no create/destroy");
   return entry;
 }

@@ -56,7 +56,7 @@ class Encoder {
     } else if constexpr (is_array<T>::value) {
       for (const auto& e : v) value(e);
     } else {
-      visit_fields(v, [this](const char*, const auto& field) { value(field); });
+      visit_fields(v, [this](const char*, const auto& field) { this->value(field); });
     }
   }
 
@@ -95,7 +95,7 @@ class Decoder {
     } else if constexpr (is_array<T>::value) {
       for (auto& e : v) value(e, 0, name);
     } else {
-      visit_fields(v, [this](const char* field_name, auto& field) { value(field, T::max_size(field_name), field_name); });
+      visit_fields(v, [this](const char* field_name, auto& field) { this->value(field, T::max_size(field_name), field_name); });
     }
   }
   std::size_t position() const { return at_; }

@@ -68,8 +68,21 @@ std::string unknown_name_message(const Kind& kind, const std::string& name, cons
 // there is none.
 Found locate(const Kind& kind, const std::string& name);
 
+// Opens the library and returns its entry point, a function of no arguments that returns
+// `const Plugin*`. Throws Error naming the file and the reason.
+void* open_entry_point(const Kind& kind, const Found& plugin);
+// Throws Error unless `result`, what the entry point returned, starts with kind.abi.
+void check_abi(const Kind& kind, const Found& plugin, const void* result);
+
 // Opens the library and returns what its entry point returns, once the ABI string matched.
-// Throws Error naming the file and the reason.
-const void* open(const Kind& kind, const Found& plugin);
+// Called through its own type (a call through another function type is undefined behaviour,
+// which clang's -fsanitize=function reports). Throws Error naming the file and the reason.
+template <class Plugin>
+const Plugin* open(const Kind& kind, const Found& plugin) {
+  using Entry = const Plugin* (*)();
+  const Plugin* result = reinterpret_cast<Entry>(open_entry_point(kind, plugin))();
+  check_abi(kind, plugin, result);
+  return result;
+}
 
 }  // namespace plumb::plugin
