@@ -106,6 +106,15 @@ int run_play(const PlayOptions& o) {
   while (!g_stop && Clock::now() < wait_until &&
          std::any_of(publishers.begin(), publishers.end(), [](const auto& p) { return p.second->matched() == 0; }))
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  // Nothing lost in silence: a topic no reader matched within --wait is played into nothing.
+  std::string unmatched;
+  for (const auto& [id, c] : reader.channels()) {
+    const auto p = publishers.find(id);
+    if (p != publishers.end() && p->second->matched() == 0) unmatched += (unmatched.empty() ? "" : ", ") + c.topic;
+  }
+  if (!unmatched.empty() && !g_stop)
+    std::cerr << "plumb play: warning: no reader matched " << unmatched << " within --wait " << o.wait_s
+              << " s: playing to none (start the readers first, or wait longer)\n";
   // A writer sees the match before the reader has finished matching it: reliable data sent in
   // that moment is dropped by the reader (volatile: it was not there yet). Half a second settles it.
   if (std::any_of(publishers.begin(), publishers.end(), [](const auto& p) { return p.second->matched() > 0; }))

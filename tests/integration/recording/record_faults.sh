@@ -110,4 +110,9 @@ expect_error "not a recording" "not an MCAP file" "$bin/plumb" info "$work/sim.l
 expect_error "missing recording" "cannot open" "$bin/plumb" info "$work/missing.mcap"
 expect_error "play a topic not recorded" "no topic 'plumb/attitude/x'" "$bin/plumb" play "$work/killed.mcap" --topics plumb/attitude/x
 expect_error "bad rate" "--rate 'fast'" "$bin/plumb" play "$work/killed.mcap" --rate fast
+# Played with no reader on the domain: it says that it plays to none (not in silence).
+"$bin/plumb" play "$work/killed.mcap" --wait 0.5 --rate max > /dev/null 2> "$work/play_none.err" &&
+  grep -q "no reader matched .* within --wait 0.5 s" "$work/play_none.err" &&
+  pass "play with no reader says so: $(grep -m1 'no reader' "$work/play_none.err")" ||
+  fail "play with no reader: $(cat "$work/play_none.err")"
 finish
