@@ -17,6 +17,12 @@ namespace {
 
 constexpr double kTempDegPerHour = 3.14159265358979323846 / 180.0 / 3600.0;  // deg/h -> rad/s
 
+TemperatureDrift drift_part_for(const NavigatorConfig& config) {
+  TemperatureDrift part;
+  part.reset(config);
+  return part;
+}
+
 InputReading warm_reading(double t, double temp_c) {
   InputReading in;
   in.t = t;
@@ -46,10 +52,8 @@ std::pair<double, double> added_variance(TemperatureDrift& part, Counters& count
 }
 
 TEST(TemperatureDrift, CorrectsByTheStatedCoefficient) {
-  const NavigatorConfig config = parse_parameters(
-      {{"imu_grade", "mems"}, {"gyro_bias_temp_dph_per_c", "0.2"}, {"accel_bias_temp_mg_per_c", "0.05"}});
-  TemperatureDrift part;
-  part.reset(config);
+  TemperatureDrift part = drift_part_for(parse_parameters(
+      {{"imu_grade", "mems"}, {"gyro_bias_temp_dph_per_c", "0.2"}, {"accel_bias_temp_mg_per_c", "0.05"}}));
   Counters counters;
   InputReading first = warm_reading(0, 61.5);
   part.correct(first, counters);
@@ -69,10 +73,8 @@ TEST(TemperatureDrift, CorrectsByTheStatedCoefficient) {
 }
 
 TEST(TemperatureDrift, BiasNoiseCoversTheChangeSquaredAndNothingWhileItHolds) {
-  const NavigatorConfig config = parse_parameters(
-      {{"gyro_bias_temp_dph_per_c", "0.1"}, {"accel_bias_temp_mg_per_c", "0.02"}, {"bias_temp_sd", "0.3"}});
-  TemperatureDrift part;
-  part.reset(config);
+  TemperatureDrift part = drift_part_for(parse_parameters(
+      {{"gyro_bias_temp_dph_per_c", "0.1"}, {"accel_bias_temp_mg_per_c", "0.02"}, {"bias_temp_sd", "0.3"}}));
   Counters counters;
   double t = 0;
   InputReading first = warm_reading(t, 60);
@@ -97,9 +99,7 @@ TEST(TemperatureDrift, BiasNoiseCoversTheChangeSquaredAndNothingWhileItHolds) {
 }
 
 TEST(TemperatureDrift, WithoutCoefficientsTheGradesWidenAndANoticeNamesTheParameters) {
-  const NavigatorConfig config = parse_parameters({{"imu_grade", "mems"}});
-  TemperatureDrift part;
-  part.reset(config);
+  TemperatureDrift part = drift_part_for(parse_parameters({{"imu_grade", "mems"}}));
   Counters counters;
   double t = 0;
   InputReading first = warm_reading(t, 60);
@@ -124,8 +124,7 @@ TEST(TemperatureDrift, IgnoredWhenAskedOrAbsent) {
   for (const bool ask_off : {true, false}) {
     NavigatorConfig config = parse_parameters({{"gyro_bias_temp_dph_per_c", "0.2"}});
     config.use_temperature = !ask_off;
-    TemperatureDrift part;
-    part.reset(config);
+    TemperatureDrift part = drift_part_for(config);
     Counters counters;
     for (int k = 0; k < 1000; ++k) {
       InputReading in = warm_reading(0.01 * k, 60 + 0.03 * k);
