@@ -3,6 +3,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "launch_file.hpp"
 #include "plumb/components/cli.hpp"
@@ -14,12 +15,13 @@ namespace {
 
 struct LaunchOptions {
   std::string file;
+  std::vector<std::string> arguments;  // NAME:=VALUE
   launch::SupervisorOptions supervisor;
 };
 
 int run_launch(const LaunchOptions& o) {
   try {
-    const auto programs = launch::read_launch_file(o.file);
+    const auto programs = launch::read_launch_file(o.file, launch::parse_arguments(o.arguments));
     components::install_stop_handler();
     return launch::supervise(programs, o.supervisor, std::cout, std::cerr);
   } catch (const std::exception& e) {
@@ -38,6 +40,8 @@ void add_launch_verb(CLI::App& app, Verbs& verbs) {
   cmd->add_option("file", o->file, "launch file (YAML: 'launch:', then '- cmd: PROGRAM OPTIONS' entries)")
       ->required()
       ->type_name("FILE.yaml");
+  cmd->add_option("arguments", o->arguments, "launch arguments the file declares, NAME:=VALUE (e.g. port:=8081)")
+      ->type_name("NAME:=VALUE");
   cmd->add_option("--stop-timeout", o->supervisor.stop_timeout_s,
                   "seconds a program has to stop after SIGINT before it is killed")
       ->check(CLI::PositiveNumber)

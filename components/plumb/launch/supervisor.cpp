@@ -47,7 +47,8 @@ class Supervisor {
     for (const auto& p : programs) {
       const std::string path = find_program(p.argv[0]);
       if (path.empty())
-        throw std::invalid_argument(p.where + ": program '" + p.argv[0] + "' not found (next to plumb, nor on PATH)");
+        throw std::invalid_argument((p.cmd_where.empty() ? p.where : p.cmd_where) + ": program '" + p.argv[0] +
+                                    "' not found (next to plumb, nor on PATH)");
       slots_.push_back({&p, path, nullptr, State::Waiting, 0, Clock::now()});
     }
   }
@@ -61,8 +62,14 @@ class Supervisor {
       if (all_ended()) break;
       if (stopping_ && Clock::now() > kill_at_) kill_remaining();
     }
-    say("launch", failed_ ? "stopped: " + failed_what_ : "every program ended");
-    return failed_ ? 1 : 0;
+    std::string alone;
+    for (const auto& why : failed_alone_) alone += (alone.empty() ? "" : "; ") + why;
+    if (failed_) {
+      say("launch", "stopped: " + failed_what_ + (alone.empty() ? "" : "; failed alone before: " + alone));
+    } else {
+      say("launch", alone.empty() ? "every program ended" : "every program ended; failed alone: " + alone);
+    }
+    return failed_ || !alone.empty() ? 1 : 0;
   }
 
  private:
@@ -78,8 +85,7 @@ class Supervisor {
         say("launch", "started " + s.spec->name + " (pid " + std::to_string(s.child->pid()) + "): " + command_line(*s.spec));
       } catch (const std::exception& e) {
         say("launch", s.spec->name + ": " + e.what());
-        s.state = State::Failed;
-        fail(s.spec->name + " could not be started");
+        failed_for_good(s, s.spec->name + " could not be started");
       }
     }
   }
@@ -147,6 +153,13 @@ class Supervisor {
       if (!stopping_ && s.spec->shutdown_on_exit) begin_stop(s.spec->name + " ended (on_exit: shutdown)");
       return;
     }
+    // Exit status 2 is a usage error (every plumb program's): the same command would fail again.
+    const bool usage_error = WIFEXITED(status) && WEXITSTATUS(status) == 2;
+    if (usage_error) {
+      failed_for_good(s, s.spec->name + " failed (" + how + ": a usage error, not restarted; its command is at " +
+                             (s.spec->cmd_where.empty() ? s.spec->where : s.spec->cmd_where) + ")");
+      return;
+    }
     if (s.spec->restart == Restart::OnFailure && s.restarts < s.spec->restart_limit) {
       ++s.restarts;
       s.state = State::Waiting;
@@ -158,12 +171,22 @@ class Supervisor {
       say("launch", text.str());
       return;
     }
+    failed_for_good(s, s.spec->restart == Restart::Never
+                           ? s.spec->name + " failed (" + how + "; restart: never)"
+                           : s.spec->name + " failed (" + how + ") after " + std::to_string(s.restarts) + " restarts");
+  }
+
+  // A program the file marks required, or whose end ends the launch (on_exit: shutdown), stops the
+  // others; any other fails alone (a display whose port is taken does not stop the survey).
+  void failed_for_good(Slot& s, const std::string& why) {
     s.state = State::Failed;
-    const std::string why = s.spec->restart == Restart::Never
-                                ? s.spec->name + " failed (" + how + "; restart: never)"
-                                : s.spec->name + " failed (" + how + ") after " + std::to_string(s.restarts) + " restarts";
-    say("launch", why + ": stopping the others");
-    fail(why);
+    if (s.spec->required || s.spec->shutdown_on_exit) {
+      say("launch", why + (s.spec->required ? " (required)" : " (on_exit: shutdown)") + ": stopping the others");
+      fail(why);
+      return;
+    }
+    say("launch", why + ": the others go on (not required)");
+    failed_alone_.push_back(why);
   }
 
   void fail(const std::string& why) {
@@ -209,6 +232,7 @@ class Supervisor {
   bool stopping_ = false;
   bool failed_ = false;
   std::string failed_what_;
+  std::vector<std::string> failed_alone_;
   Clock::time_point kill_at_{};
 };
 

@@ -1,6 +1,7 @@
 // plumb launch's loop: starts every program of a launch file, prefixes each line of their output
-// with their name, restarts them per their policy, and stops them all on SIGINT or SIGTERM, when
-// one fails for good, or when one marked on_exit: shutdown ends.
+// with their name, restarts them per their policy (never a usage error, exit status 2), and stops
+// them all on SIGINT or SIGTERM, when a required one fails for good, or when one marked on_exit:
+// shutdown ends. Any other program that fails for good fails alone.
 #pragma once
 
 #include <ostream>
@@ -15,7 +16,7 @@ struct SupervisorOptions {
 };
 
 // Returns the exit status: 0 when every program ended well or was stopped on request, 1 when one
-// failed for good. Throws std::invalid_argument (FILE:LINE) for a program that cannot be found,
+// failed for good (alone or not). Throws std::invalid_argument (FILE:LINE) for a program that cannot be found,
 // before anything is started.
 int supervise(const std::vector<ProgramSpec>& programs, const SupervisorOptions& options, std::ostream& out,
               std::ostream& err);

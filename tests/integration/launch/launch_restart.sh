@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # plumb launch's policies, on plumb-wits-send (no DDS: waits for a reader for ever, or fails at
-# once on a bad option). A program with restart: on-failure is killed with SIGKILL and comes back
-# as a new process, each time, until its limit; then it has failed for good: plumb launch stops the
-# others and exits 1. A program with restart: never that fails stops the launch at once, exit 1.
-# SIGINT (Ctrl-C) and SIGTERM stop every program: exit 0, no process left.
+# once on a bad option). A required program with restart: on-failure is killed with SIGKILL and
+# comes back as a new process, each time, until its limit; then it has failed for good: plumb
+# launch stops the others and exits 1. A program that is not required fails alone: the others go
+# on, and plumb launch exits 1 when they end. A usage error (exit 2) is never restarted. SIGINT
+# (Ctrl-C) and SIGTERM stop every program: exit 0, no process left. Launch arguments (NAME:=VALUE)
+# reach the command lines; errors name the line that is wrong.
 # usage: launch_restart.sh BIN_DIR
 set -uo pipefail
 bin=$1
@@ -20,6 +22,7 @@ cat > "$work/restart.yaml" <<YAML
 launch:
   - name: rig
     cmd: plumb-wits-send --listen $(free_port)
+    required: true
     restart: on-failure
     restart_limit: 2
     restart_delay: 0.2
@@ -47,17 +50,41 @@ done
 alive "$other" && pass "the other program kept running" || fail "the other program is gone"
 kill -9 "$(pid_of rig "$work/out.txt")"
 wait "$launch"; rc=$?
-[ $rc -eq 1 ] && grep -q "^\[launch\] rig failed (killed by SIGKILL) after 2 restarts: stopping the others" "$work/out.txt" &&
+[ $rc -eq 1 ] && grep -q "^\[launch\] rig failed (killed by SIGKILL) after 2 restarts (required): stopping the others" "$work/out.txt" &&
   pass "the third kill: failed for good, exit status 1" || { cat "$work/out.txt"; fail "after the limit: exit $rc"; }
 ! alive "$other" && ! alive "$first" && grep -q "^\[launch\] other ended" "$work/out.txt" &&
   pass "the others were stopped" || fail "a program outlived plumb launch"
 
-# restart: never, and a program that fails at once.
-printf 'launch:\n  - cmd: plumb-wits-send --listen %s\n  - name: bad\n    cmd: plumb-wits-send --bogus\n' "$(free_port)" > "$work/never.yaml"
-timeout 30 plumb launch "$work/never.yaml" > "$work/never.txt" 2>&1; rc=$?
-[ $rc -eq 1 ] && grep -q "^\[bad\] plumb-wits-send: .*bogus" "$work/never.txt" &&
-  grep -q "^\[launch\] bad failed (exit status 2; restart: never): stopping the others" "$work/never.txt" &&
-  pass "restart: never: the failure stops the launch, exit status 1" || { cat "$work/never.txt"; fail "restart: never: exit $rc"; }
+# A usage error (exit 2), restart: on-failure all the same: not restarted, and, not required, it
+# fails alone: the other program goes on until Ctrl-C, then exit status 1 says what failed.
+printf 'launch:\n  - cmd: plumb-wits-send --listen %s\n  - name: bad\n    restart: on-failure\n    cmd: plumb-wits-send --bogus\n' \
+  "$(free_port)" > "$work/alone.yaml"
+plumb launch "$work/alone.yaml" > "$work/alone.txt" 2>&1 &
+launch=$!; pids+=($launch)
+if wait_for "$work/alone.txt" "^\[launch\] bad failed \(exit status 2: a usage error, not restarted; its command is at .*alone\.yaml:5\): the others go on \(not required\)" 10 &&
+   sleep 1 && alive "$(pid_of plumb-wits-send "$work/alone.txt")" && [ "$(grep -c "started bad" "$work/alone.txt")" -eq 1 ]; then
+  pass "a usage error: not restarted, failed alone, the other still runs"
+else
+  cat "$work/alone.txt"; fail "a usage error in a program that is not required"
+fi
+kill -INT "$launch"
+wait "$launch"; rc=$?
+[ $rc -eq 1 ] && grep -q "^\[launch\] every program ended; failed alone: bad failed (exit status 2" "$work/alone.txt" &&
+  pass "after Ctrl-C: exit status 1, the failure said again" || { cat "$work/alone.txt"; fail "failed alone: exit $rc"; }
+
+# Launch arguments: declared with a default, given as NAME:=VALUE.
+port=$(free_port)
+printf 'arguments:\n  port: "1"\nlaunch:\n  - cmd: plumb-wits-send --listen $(var port)\n' > "$work/args.yaml"
+plumb launch "$work/args.yaml" port:=$port > "$work/args.txt" 2>&1 &
+launch=$!; pids+=($launch)
+wait_for "$work/args.txt" "started plumb-wits-send \(pid [0-9]+\): plumb-wits-send --listen $port\$" 10 &&
+  pass "port:=$port reaches the command line" || { cat "$work/args.txt"; fail "launch argument"; }
+kill -INT "$launch"; wait "$launch"
+expect_usage "an argument the file does not declare" "launch argument 'prot' is not declared in .*args\.yaml \(declared: port\)" \
+  plumb launch "$work/args.yaml" prot:=1
+expect_usage "an argument without :=" "'port=1': a launch argument is NAME:=VALUE" plumb launch "$work/args.yaml" port=1
+printf 'launch:\n  - cmd: plumb-wits-send --listen $(var prot)\n' > "$work/undeclared.yaml"
+expect_usage "a \$(var NAME) not declared" "undeclared\.yaml:2: .*var prot.: no launch argument 'prot'" plumb launch "$work/undeclared.yaml"
 
 # Ctrl-C and SIGTERM stop everything, exit status 0.
 for sig in INT TERM; do
@@ -74,7 +101,7 @@ for sig in INT TERM; do
 done
 
 sed 's/restart_delay/restrat/' "$work/restart.yaml" > "$work/typo.yaml"
-expect_usage "a launch file with an unknown key" "typo\.yaml:6: unknown key 'restrat'" plumb launch "$work/typo.yaml"
-printf 'launch:\n  - cmd: plumb-nothing --x\n' > "$work/missing.yaml"
-expect_usage "a program that does not exist" "missing\.yaml:2: program 'plumb-nothing' not found" plumb launch "$work/missing.yaml"
+expect_usage "a launch file with an unknown key" "typo\.yaml:7: unknown key 'restrat'" plumb launch "$work/typo.yaml"
+printf 'launch:\n  - name: nothing\n    restart: never\n    cmd: plumb-nothing --x\n' > "$work/missing.yaml"
+expect_usage "a program that does not exist, at its cmd line" "missing\.yaml:4: program 'plumb-nothing' not found" plumb launch "$work/missing.yaml"
 finish

@@ -61,7 +61,7 @@ TEST_F(LaunchFile, ProgramsWithTheirPolicies) {
 
 TEST_F(LaunchFile, RefusalsNameTheLine) {
   EXPECT_EQ(message_for("launch:\n  - cmd: a\n    restrat: on-failure\n"),
-            path_ + ":3: unknown key 'restrat' (known: name, cmd, restart, restart_limit, restart_delay, on_exit, env, cwd)");
+            path_ + ":3: unknown key 'restrat' (known: name, cmd, restart, restart_limit, restart_delay, required, on_exit, env, cwd)");
   EXPECT_EQ(message_for("launch:\n  - cmd: a\n    restart: always\n"),
             path_ + ":3: 'restart' is never or on-failure, got 'always'");
   EXPECT_EQ(message_for("launch:\n  - name: x\n"), path_ + ":2: a program without 'cmd'");
@@ -76,6 +76,42 @@ TEST_F(LaunchFile, RefusalsNameTheLine) {
   EXPECT_EQ(read_launch_file(write("launch:\n  - cmd: a\n"))[0].name, "a");
   EXPECT_NE(message_for("launch:\n  - cmd: [a\n").find(": not YAML"), std::string::npos);
   EXPECT_NE(message_for("").find("expected 'launch:'"), std::string::npos);
+}
+
+TEST_F(LaunchFile, RequiredAndWhereTheCommandIs) {
+  const auto p = read_launch_file(write("launch:\n  - name: a\n    required: true\n    cmd: x\n  - cmd: y\n"));
+  EXPECT_TRUE(p[0].required);
+  EXPECT_FALSE(p[1].required) << "a program fails alone unless the file says otherwise";
+  EXPECT_EQ(p[0].where, path_ + ":2");
+  EXPECT_EQ(p[0].cmd_where, path_ + ":4");
+  EXPECT_EQ(message_for("launch:\n  - cmd: a\n    required: yes please\n"),
+            path_ + ":3: 'required' is true or false, got 'yes please'");
+}
+
+// Launch arguments as ROS 2's: declared with defaults, given as NAME:=VALUE, $(var NAME) in cmd,
+// env and cwd.
+TEST_F(LaunchFile, ArgumentsReplaceTheirVariables) {
+  const std::string file = "arguments:\n  port: \"8080\"\n  dir: run\nlaunch:\n"
+                           "  - cmd: plumb-display --port $(var port) --x a$(var port)b\n"
+                           "    env: {P: \"$(var port)\"}\n    cwd: $(var dir)/here\n";
+  auto p = read_launch_file(write(file));
+  EXPECT_EQ(p[0].argv, (std::vector<std::string>{"plumb-display", "--port", "8080", "--x", "a8080b"}));
+  p = read_launch_file(write(file), parse_arguments({"port:=8081"}));
+  EXPECT_EQ(p[0].argv[2], "8081");
+  EXPECT_EQ(p[0].env.at("P"), "8081");
+  EXPECT_EQ(p[0].cwd, "run/here");
+  try {
+    read_launch_file(write(file), {{"prot", "1"}});
+    ADD_FAILURE() << "an undeclared argument was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "launch argument 'prot' is not declared in " + path_ + " (declared: dir, port)");
+  }
+  EXPECT_EQ(message_for("launch:\n  - cmd: a $(var x)\n"),
+            path_ + ":2: $(var x): no launch argument 'x' (declared under 'arguments:': none)");
+  EXPECT_EQ(message_for("launch:\n  - cmd: a $(env HOME)\n"),
+            path_ + ":2: '$(' starts a substitution: $(var NAME), got '$(env HOME)'");
+  EXPECT_THROW(parse_arguments({"port=1"}), std::invalid_argument);
+  EXPECT_THROW(parse_arguments({":=1"}), std::invalid_argument);
 }
 
 TEST(LaunchWords, SplitLikeAShell) {
