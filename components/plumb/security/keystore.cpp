@@ -250,7 +250,13 @@ std::optional<Grant> default_grant(const std::string& name) {
        {{"plumb/attitude/*", "plumb/navigation/*", "plumb/status"},
         {"plumb/sensor/*", "plumb/depth", "plumb/sim/truth", "plumb/calibration"}}},
       {"plumb-calibrate", {{"plumb/calibration", "plumb/sensor/raw", "plumb/status"}, {"plumb/sensor/*"}}},
-      {"plumb-survey", {{"plumb/survey/*", "plumb/status"}, {"plumb/attitude/*", "plumb/navigation/*", "plumb/depth"}}},
+      // The sensor topic: the depth clock's estimate matches the stops it sees with the depth's.
+      {"plumb-survey",
+       {{"plumb/survey/*", "plumb/clearance", "plumb/status"},
+        {"plumb/attitude/*", "plumb/navigation/*", "plumb/depth", "plumb/sensor/*"}}},
+      {"plumb-wits", {{"plumb/depth", "plumb/status"}, {}}},
+      {"plumb-display",
+       {{"plumb/status"}, {"plumb/attitude/*", "plumb/survey/*", "plumb/clearance", "plumb/depth", "plumb/status"}}},
       // The plumb tool as an operator's monitor (topic echo / hz, status, record): reads everything.
       {"plumb-monitor", {{}, {"plumb/*"}}},
   };
@@ -259,6 +265,8 @@ std::optional<Grant> default_grant(const std::string& name) {
   return it->second;
 }
 
-std::string default_grant_names() { return "plumb-sim, plumb-bridge, plumb-estimator, plumb-calibrate, plumb-survey, plumb-monitor"; }
+std::string default_grant_names() {
+  return "plumb-sim, plumb-bridge, plumb-estimator, plumb-calibrate, plumb-survey, plumb-wits, plumb-display, plumb-monitor";
+}
 
 }  // namespace plumb::cli

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Runs a systemd unit's ExecStart as systemd would, without systemd: the EnvironmentFile= files
 (read as systemd reads them: KEY=VALUE lines, '#' comments, quotes removed), %i replaced by the
-instance, $VAR and ${VAR} words replaced by their value split into words, and the program started
-with that environment. Paths of the unit (the environment files, the program) are taken inside ROOT,
-where the packages were unpacked. For the package test, where no systemd runs.
+instance, $VAR and ${VAR} words replaced by their value split into words, StateDirectory= made, and
+the program started with that environment. Paths of the unit (the environment files, the program,
+and arguments under /etc/plumb and /var/lib/plumb) are taken inside ROOT, where the packages were
+unpacked. For the package and unit tests, where no systemd runs.
 usage: systemd_exec.py ROOT UNIT_FILE [INSTANCE]
 """
 import os
@@ -31,6 +32,9 @@ for line in open(unit):
                 continue
             key, value = text.split("=", 1)
             env[key.strip()] = " ".join(shlex.split(value)) if value.strip() else ""
+    elif line.startswith("StateDirectory="):
+        for d in line.split("=", 1)[1].split():
+            os.makedirs(f"{root}/var/lib/{d}", exist_ok=True)
     elif line.startswith("ExecStart="):
         exec_start = line.split("=", 1)[1]
 if exec_start is None:
@@ -40,5 +44,6 @@ for word in exec_start.split():
     match = re.fullmatch(r"\$\{?(\w+)\}?", word)
     argv += env.get(match.group(1), "").split() if match else [word]
 argv[0] = root + argv[0]
+argv = [root + a if a.startswith(("/etc/plumb/", "/var/lib/plumb/")) else a for a in argv]
 print("systemd_exec: " + " ".join(shlex.quote(a) for a in argv), flush=True)
 os.execve(argv[0], argv, env)

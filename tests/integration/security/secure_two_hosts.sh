@@ -37,7 +37,7 @@ capture_stop() { kill -INT $cap_pid; wait $cap_pid 2>/dev/null; }
 ks=$work/ks other=$work/other
 "$bin/plumb" security create-keystore "$ks" --domains 10-19 > /dev/null || { fail "create-keystore"; finish; }
 "$bin/plumb" security create-keystore "$other" --domains 10-19 > /dev/null || { fail "create-keystore (other CA)"; finish; }
-for n in plumb-sim plumb-estimator plumb-monitor plumb-calibrate plumb-survey; do
+for n in plumb-sim plumb-estimator plumb-monitor plumb-calibrate plumb-wits; do
   "$bin/plumb" security create-identity "$ks" $n > /dev/null || fail "create-identity $n"
 done
 for n in plumb-monitor plumb-estimator; do "$bin/plumb" security create-identity "$other" $n > /dev/null || fail "other $n"; done
@@ -84,7 +84,7 @@ in_plain=$!; pids+=($in_plain)
 on surface timeout 60 "$bin/plumb" topic echo plumb/sensor/raw --security "$other/enclaves/plumb-monitor" --csv --count 1 \
   --timeout 25 > "$work/in_other.txt" 2>&1 &
 in_other=$!; pids+=($in_other)
-on surface timeout 60 "$bin/plumb" topic echo plumb/sensor/raw --security "$(ident plumb-survey)" --csv --count 1 --timeout 25 \
+on surface timeout 60 "$bin/plumb" topic echo plumb/sensor/raw --security "$(ident plumb-wits)" --csv --count 1 --timeout 25 \
   > "$work/in_denied.txt" 2>&1 &
 in_denied=$!; pids+=($in_denied)
 sleep 2
@@ -102,7 +102,7 @@ on tool timeout 60 "$bin/plumb" topic pub plumb/attitude/compensated inclination
   --security "$other/enclaves/plumb-estimator" --count 40 --rate 4 --wait 3 > "$work/pub_other.txt" 2>&1 &
 pids+=($!)
 on tool timeout 60 "$bin/plumb" topic pub plumb/attitude/compensated inclination_deg=55 azimuth_deg=45 flags=1 estimator=denied \
-  --security "$(ident plumb-survey)" --count 40 --rate 4 --wait 3 > "$work/pub_denied.txt" 2>&1 &
+  --security "$(ident plumb-wits)" --count 40 --rate 4 --wait 3 > "$work/pub_denied.txt" 2>&1 &
 pids+=($!)
 # Calibration, kept for late joiners: published once, then the next only 10 s later; a secured
 # reader that starts 4 s after the first must get it from the writer's history.
