@@ -52,6 +52,10 @@ template <class M> class TypedStream final : public DdsFeed::Stream {
     const std::string key = s.component + "@" + s.host;
     hub.status(key, status_json(s, key, rx));
   }
+  static void deliver(Hub& hub, const topics::Clearance& c, double) {
+    hub.clearance(c.tool_id + "/" + c.offset_well, clearance_json(c, c.tool_id + "/" + c.offset_well));
+  }
+  static void deliver(Hub& hub, const topics::MeasuredDepth& d, double) { hub.depth(d.tool_id, depth_json(d)); }
   static void deliver(Hub& hub, const topics::SurveyStation& s, double) {
     const std::string key = s.tool_id + "#" + std::to_string(s.index);
     hub.station(key, station_json(s, key));
@@ -68,6 +72,13 @@ DdsFeed::DdsFeed(transport::Participant& participant, Hub& hub) : participant_(p
   streams_.push_back(std::make_unique<TypedStream<topics::ComponentStatus>>(transport::make_reader<topics::ComponentStatus>(
       participant_, status, transport::default_qos_for_topic(status), [this] { wake(); })));
   topics_.insert(status);
+  const std::string clearance = transport::topic_names::kClearance, depth = transport::topic_names::kDepth;
+  streams_.push_back(std::make_unique<TypedStream<topics::Clearance>>(transport::make_reader<topics::Clearance>(
+      participant_, clearance, transport::default_qos_for_topic(clearance), [this] { wake(); })));
+  streams_.push_back(std::make_unique<TypedStream<topics::MeasuredDepth>>(transport::make_reader<topics::MeasuredDepth>(
+      participant_, depth, transport::default_qos_for_topic(depth), [this] { wake(); })));
+  topics_.insert(clearance);
+  topics_.insert(depth);
 }
 
 DdsFeed::~DdsFeed() = default;

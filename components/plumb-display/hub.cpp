@@ -45,13 +45,15 @@ std::optional<std::string> Outbox::next() {
   std::vector<Text> attitudes;
   for (auto& [key, queue] : attitudes_) attitudes.insert(attitudes.end(), queue.begin(), queue.end());
   append_list(frame, "att", attitudes.size(), [&](std::size_t i) -> const std::string& { return *attitudes[i]; });
-  std::vector<Text> statuses;
-  for (auto& [key, text] : statuses_) statuses.push_back(text);
-  append_list(frame, "status", statuses.size(), [&](std::size_t i) -> const std::string& { return *statuses[i]; });
+  for (const char* kind : {"status", "clearance", "depth"}) {
+    std::vector<Text> texts;
+    for (auto& [key, text] : states_[kind]) texts.push_back(text);
+    append_list(frame, kind, texts.size(), [&](std::size_t i) -> const std::string& { return *texts[i]; });
+  }
   append_list(frame, "survey", stations_.size(), [&](std::size_t i) -> const std::string& { return *stations_[i]; });
   frame += '}';
   attitudes_.clear();
-  statuses_.clear();
+  states_.clear();
   stations_.clear();
   return frame;
 }
@@ -93,18 +95,34 @@ void Hub::attitude(const std::string& key, const std::string& json, const Histor
   }
 }
 
-void Hub::status(const std::string& key, const std::string& json) {
+void Hub::latest(const std::string& kind, const std::string& key, const std::string& json) {
   auto text = std::make_shared<const std::string>(json);
-  std::lock_guard lock(mutex_);
-  ++stats_.statuses;
-  latest_status_[key] = text;
+  states_[kind][key] = text;
   for (const auto& box : outboxes_) {
     {
       std::lock_guard box_lock(box->mutex_);
-      box->statuses_[key] = text;
+      box->states_[kind][key] = text;
     }
     box->cv_.notify_one();
   }
+}
+
+void Hub::status(const std::string& key, const std::string& json) {
+  std::lock_guard lock(mutex_);
+  ++stats_.statuses;
+  latest("status", key, json);
+}
+
+void Hub::clearance(const std::string& key, const std::string& json) {
+  std::lock_guard lock(mutex_);
+  ++stats_.clearances;
+  latest("clearance", key, json);
+}
+
+void Hub::depth(const std::string& key, const std::string& json) {
+  std::lock_guard lock(mutex_);
+  ++stats_.depths;
+  latest("depth", key, json);
 }
 
 void Hub::station(const std::string& key, const std::string& json) {
@@ -158,7 +176,7 @@ std::shared_ptr<Outbox> Hub::join() {
   std::lock_guard lock(mutex_);
   box->hello_ = std::make_shared<const std::string>(hello_json());
   for (const auto& [key, text] : latest_attitude_) box->attitudes_[key].push_back(text);
-  box->statuses_ = latest_status_;
+  box->states_ = states_;
   for (const auto& key : station_order_) box->stations_.push_back(stations_.at(key));
   outboxes_.push_back(box);
   ++stats_.browsers_total;

@@ -51,13 +51,15 @@ class Outbox {
  private:
   friend class Hub;
   explicit Outbox(const HubOptions& options) : options_(options) {}
-  bool pending() const { return !attitudes_.empty() || !statuses_.empty() || !stations_.empty() || hello_; }
+  bool pending() const { return !attitudes_.empty() || !states_.empty() || !stations_.empty() || hello_; }
 
   const HubOptions options_;  // a copy: a sender thread may hold its outbox a moment longer than the hub lives
   mutable std::mutex mutex_;
   std::condition_variable cv_;
   std::map<std::string, std::deque<Text>> attitudes_;  // by tool/estimator, oldest first
-  std::map<std::string, Text> statuses_;               // by component@host, latest only
+  // States of which only the latest counts, by kind (the frame's list: "status", "clearance",
+  // "depth") and key (component@host, tool/offset well, tool).
+  std::map<std::string, std::map<std::string, Text>> states_;
   std::deque<Text> stations_;
   Text hello_;  // snapshot for a browser that just joined: history and server settings
   bool closed_ = false;
@@ -68,7 +70,7 @@ class Outbox {
 struct HubStats {
   std::size_t browsers = 0;
   std::uint64_t browsers_total = 0;  // joined since the start
-  std::uint64_t attitudes = 0, statuses = 0, stations = 0;
+  std::uint64_t attitudes = 0, statuses = 0, stations = 0, clearances = 0, depths = 0;
   std::uint64_t dropped = 0;  // estimates dropped for slow browsers, over all browsers ever
 };
 
@@ -77,10 +79,14 @@ class Hub {
   explicit Hub(HubOptions options = {});
 
   // Producer side (the DDS thread). `key` names the stream: tool/estimator, component@host,
-  // tool#station.
+  // tool#station, tool/offset well.
   void attitude(const std::string& key, const std::string& json, const HistoryPoint& point);
   void status(const std::string& key, const std::string& json);
   void station(const std::string& key, const std::string& json);
+  // The newest station's clearance against one offset well (the page shows the nearest).
+  void clearance(const std::string& key, const std::string& json);
+  // A tool's newest measured depth.
+  void depth(const std::string& key, const std::string& json);
 
   // Consumer side (a browser's sender thread): an outbox filled with the current state.
   std::shared_ptr<Outbox> join();
@@ -91,13 +97,16 @@ class Hub {
 
  private:
   std::string hello_json() const;  // under mutex_
+  // A state of which only the latest counts (a status, a clearance, a depth): kept for browsers
+  // that join later, and replacing the one each browser has not been sent yet.
+  void latest(const std::string& kind, const std::string& key, const std::string& json);
 
   const HubOptions options_;
   mutable std::mutex mutex_;
   std::vector<std::shared_ptr<Outbox>> outboxes_;
   std::map<std::string, Text> latest_attitude_;
   std::map<std::string, std::deque<HistoryPoint>> history_;
-  std::map<std::string, Text> latest_status_;
+  std::map<std::string, std::map<std::string, Text>> states_;  // by kind and key, as Outbox::states_
   std::map<std::string, Text> stations_;  // by tool#index: a station sent again replaces itself
   std::deque<std::string> station_order_;
   HubStats stats_;

@@ -75,6 +75,8 @@ std::string station_json(const topics::SurveyStation& s, const std::string& key)
   j["sinc"] = json_number(s.inclination_sd_deg, 3);
   j["azi"] = json_number(s.azimuth_deg, 3);
   j["sazi"] = json_number(s.azimuth_sd_deg, 3);
+  j["tinc"] = json_number(s.inclination_total_sd_deg, 3);  // the survey's: noise and every error-model term
+  j["tazi"] = json_number(s.azimuth_total_sd_deg, 3);
   j["ref"] = s.azimuth_reference;
   j["n"] = json_number(s.north_m, 2);
   j["e"] = json_number(s.east_m, 2);
@@ -88,6 +90,32 @@ std::string station_json(const topics::SurveyStation& s, const std::string& key)
   j["tf"] = json_number(s.gravity_toolface_deg, 1);
   j["flags"] = s.flags;
   j["qc"] = s.qc_reason;
+  return json_text(j);
+}
+
+std::string depth_json(const topics::MeasuredDepth& d) {
+  Json j;
+  j["tool"] = d.tool_id;
+  j["md"] = json_number(d.depth_m, 3);
+  j["flags"] = d.flags;
+  return json_text(j);
+}
+
+std::string clearance_json(const topics::Clearance& c, const std::string& key) {
+  Json j;
+  j["k"] = key;
+  j["tool"] = c.tool_id;
+  j["off"] = c.offset_well;
+  j["i"] = c.station_index;
+  j["md"] = json_number(c.reference_md_m, 2);
+  j["omd"] = json_number(c.offset_md_m, 2);
+  j["ctc"] = json_number(c.centre_to_centre_m, 2);
+  j["es"] = json_number(c.ellipse_separation_m, 2);
+  j["sf"] = json_number(c.separation_factor, 2);
+  j["hs"] = json_number(c.high_side_bearing_deg, 1);
+  j["lvl"] = c.level;
+  j["warn"] = json_number(c.warning_sf, 2);
+  j["alarm"] = json_number(c.alarm_sf, 2);
   return json_text(j);
 }
 

@@ -33,5 +33,7 @@ double wall_clock_ms();
 std::string attitude_json(const topics::Attitude& a, const std::string& key, double rx_ms);
 std::string status_json(const topics::ComponentStatus& s, const std::string& key, double rx_ms);
 std::string station_json(const topics::SurveyStation& s, const std::string& key);
+std::string clearance_json(const topics::Clearance& c, const std::string& key);
+std::string depth_json(const topics::MeasuredDepth& d);
 
 }  // namespace plumb::display_component

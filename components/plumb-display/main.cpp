@@ -1,7 +1,8 @@
 // plumb-display: the live display in a browser. Joins the DDS domain, reads every estimator's
-// attitude (plumb/attitude/<estimator>), the survey stations (plumb/survey/<tool>) and every
-// component's status (plumb/status), and serves a page that shows them live: dials, numbers with
-// their sigma, history charts, rotation speed, stations, status and counters. docs/display.md.
+// attitude (plumb/attitude/<estimator>), the survey stations (plumb/survey/<tool>), their clearance
+// from offset wells (plumb/clearance) and every component's status (plumb/status), and serves a
+// page that shows them live: dials, numbers with their sigma, history charts, rotation speed,
+// stations, the nearest offset, status and counters. docs/display.md.
 #include <chrono>
 #include <iostream>
 
@@ -58,6 +59,8 @@ int run(const Options& o) {
                                  {"attitudes", s.attitudes},
                                  {"statuses", s.statuses},
                                  {"stations", s.stations},
+                                 {"clearances", s.clearances},
+                                 {"depths", s.depths},
                                  {"topics", feed.topics()},
                                  {"frames_sent", server.frames_sent()},
                                  {"dropped", s.dropped}});

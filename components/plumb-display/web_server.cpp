@@ -192,6 +192,8 @@ std::string WebServer::stats_json() const {
   j["attitudes"] = s.attitudes;
   j["statuses"] = s.statuses;
   j["stations"] = s.stations;
+  j["clearances"] = s.clearances;
+  j["depths"] = s.depths;
   j["dropped"] = s.dropped;
   j["frames_sent"] = frames_sent_.load();
   j["write_failures"] = write_failures_.load();

@@ -11,6 +11,7 @@
 #include "plumb/survey/detector_report.hpp"
 #include "plumb/transport/topic_names.hpp"
 #include "attitude_continuity.hpp"
+#include "clearance_watch.hpp"
 #include "depth_clock.hpp"
 #include "station_message.hpp"
 #include "survey_store.hpp"
@@ -44,6 +45,17 @@ namespace {
 
 void note(const std::string& n) { std::cerr << kProgram << ": " << n << std::endl; }
 
+// A station-list offset well is surveyed with the survey's own reference field and latitude.
+survey::StationListModel offset_model(const LiveOptions& o, const survey::SurveyOptions& s) {
+  survey::StationListModel m;
+  m.error_model = o.offset_error_model;
+  if (s.field.gravity_mps2) m.gravity_mps2 = *s.field.gravity_mps2;
+  if (s.field.total_b_uT) m.total_b_uT = *s.field.total_b_uT;
+  if (s.field.dip_deg) m.dip_deg = *s.field.dip_deg;
+  m.latitude_deg = s.latitude_deg;
+  return m;
+}
+
 // One live survey: its topics, the stations it has (kept in the file), what it has heard.
 class LiveSurvey {
  public:
@@ -61,7 +73,13 @@ class LiveSurvey {
                                                              transport::default_qos_for_topic(transport::topic_names::kDepth))),
         status_(*conn_.participant, kProgram),
         clock_(clock_options(o)),
-        detector_(components::make_detector_options(o.survey), [this](survey::Station st) { on_station(st); }, note) {}
+        detector_(components::make_detector_options(o.survey), [this](survey::Station st) { on_station(st); }, note),
+        clearance_(o.clearance, offset_model(o, result_.options()), result_.options().reference, note) {
+    if (clearance_.active())
+      clearance_writer_.emplace(transport::make_writer<topics::Clearance>(
+          *conn_.participant, transport::topic_names::kClearance,
+          transport::default_qos_for_topic(transport::topic_names::kClearance)));
+  }
 
   int run() {
     components::install_stop_handler();
@@ -75,7 +93,7 @@ class LiveSurvey {
     clock_said_ = clock_.given();  // said once above; an estimate is said when it comes
     t0_ = Clock::now();
     last_attitude_ = Clock::now();
-    status_.publish("running", all_counters());
+    status_.publish(state(), all_counters(), status_message());
     while (!components::g_stop && !enough()) {
       say_what_it_waits_for();
       if (o_.timeout_s > 0 && std::chrono::duration<double>(Clock::now() - t0_).count() > o_.timeout_s) {
@@ -90,7 +108,7 @@ class LiveSurvey {
       // The run ended (or the estimator stopped) during a stop: its station is due, not held forever.
       if (detector_.stop_open() && Clock::now() - last_attitude_ > std::chrono::seconds(kSilenceFlushS)) detector_.flush();
       take_attitudes();
-      if (status_.due()) status_.publish(refused_ ? "degraded" : "running", all_counters(), last_error_);
+      if (status_.due()) status_.publish(state(), all_counters(), status_message());
     }
     // The stop in progress when asked to stop has its station now: its windows are all there are.
     if (!enough()) detector_.flush();
@@ -98,7 +116,7 @@ class LiveSurvey {
       note(survey::no_station_advice(detector_.counters(), o_.estimator, detector_.still_tolerance_m()));
       note(clock_.describe());
     }
-    status_.publish("stopping", all_counters(), last_error_);
+    status_.publish("stopping", all_counters(), status_message());
     std::cerr << kProgram << ": " << result_.rows().size() << " station(s) (" << store_.resumed() << " resumed), "
               << result_.failed_qc() << " failed QC, " << refused_ << " refused" << std::endl;
     if (enough()) components::sleep_while_running(o_.linger_s);
@@ -109,9 +127,12 @@ class LiveSurvey {
   // Stations the file already holds are published again: this writer is new, and late joiners get
   // the whole survey from it. The detector goes on after the last of them.
   void republish_resumed() {
+    std::vector<survey::SurveyRow> so_far;
     for (const auto& row : result_.rows()) {
       writer_.write(to_topic(row));
       if (!o_.quiet) print_row(row, "resumed station");
+      so_far.push_back(row);
+      publish_clearance(so_far);
     }
     if (!result_.rows().empty()) {
       const auto& last = result_.rows().back().station;
@@ -139,12 +160,32 @@ class LiveSurvey {
       store_.append(row);  // on disk (fsync'ed) before anyone is told
       writer_.write(to_topic(row));
       if (!o_.quiet) print_row(row, "station");
+      const auto level = clearance_.level();
+      publish_clearance(result_.rows());
+      // A new level is on plumb/status at once, not at the next period.
+      if (clearance_.level() != level) status_.publish(state(), all_counters(), status_message());
     } catch (const survey::StationError& e) {
       // Kept out of the geometry, but said and counted: never dropped in silence.
       ++refused_;
       last_error_ = std::string("station refused: ") + e.what();
       note(last_error_);
     }
+  }
+
+  // Every offset well against the survey's newest station, on plumb/clearance.
+  void publish_clearance(const std::vector<survey::SurveyRow>& rows) {
+    if (!clearance_writer_) return;
+    for (const auto& pair : clearance_.at_station(rows))
+      clearance_writer_->write(to_topic(pair, rows.back(), clearance_.levels()));
+  }
+
+  // Degraded: stations refused, or the newest station at the clearance alarm.
+  std::string state() const {
+    return refused_ > 0 || clearance_.level() == survey::ClearanceLevel::Alarm ? "degraded" : "running";
+  }
+  // The clearance while not clear comes first: it is what the driller must see.
+  std::string status_message() const {
+    return clearance_.status_line().empty() ? last_error_ : clearance_.status_line();
   }
 
   components::CounterList counters() const {
@@ -170,6 +211,7 @@ class LiveSurvey {
   components::CounterList all_counters() {
     auto list = counters();
     for (auto& c : clock_.counters()) list.push_back(c);
+    for (auto& c : clearance_.counters()) list.push_back(c);
     return list;
   }
 
@@ -274,6 +316,8 @@ class LiveSurvey {
   bool clock_said_ = false;
   std::size_t clock_stops_said_ = 0;
   survey::StationDetector detector_;
+  ClearanceWatch clearance_;
+  std::optional<transport::Writer<topics::Clearance>> clearance_writer_;
   AttitudeContinuity continuity_;
   std::uint64_t refused_ = 0, depth_messages_ = 0, other_tool_ = 0;
   std::string last_error_;
@@ -292,6 +336,7 @@ int run_live_survey(const LiveOptions& o) {
   clock.offset_s = o.depth_clock_offset_s;
   clock.drift_ppm = o.depth_clock_drift_ppm;
   check_depth_clock_options(clock);  // before joining the network: a usage error is said at once
+  components::check_clearance_options(o.clearance);
   LiveSurvey survey(o);
   return survey.run();
 }

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "plumb/components/clearance_options.hpp"
 #include "plumb/components/cli.hpp"
 #include "plumb/components/survey_options.hpp"
 
@@ -26,6 +27,9 @@ struct LiveOptions {
   std::optional<double> depth_clock_offset_s;
   std::optional<double> depth_clock_drift_ppm;
   std::string sensor_topic = "plumb/sensor/calibrated";
+  // Anti-collision: offset wells, each new station against every one, on plumb/clearance.
+  components::ClearanceCliOptions clearance;
+  std::string offset_error_model = "MWD";  // how a station-list offset well is surveyed
 };
 
 int run_live_survey(const LiveOptions& options);

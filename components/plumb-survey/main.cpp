@@ -31,6 +31,11 @@ int main(int argc, char** argv) {
   app.add_option("--sensor-topic", o.sensor_topic,
                  "sensor topic whose stillness the depth's stops are matched with to estimate the depth clock")
       ->capture_default_str();
+  components::add_clearance_options(app, o.clearance, /*offsets_required=*/false);
+  app.add_option("--offset-error-model", o.offset_error_model,
+                 "error model of station-list offset wells: a built-in tool code (MWD, MWD:rev4, GYRO-NS, ...) or a tool "
+                 "code file; the survey's reference field and latitude")
+      ->capture_default_str();
   if (const int status = components::parse_command_line(app, argc, argv); status >= 0) return status;
   try {
     return survey_component::run_live_survey(o);

@@ -55,6 +55,37 @@ topics::SurveyStation to_topic(const survey::SurveyRow& r) {
   return m;
 }
 
+topics::Clearance to_topic(const ClearanceWatch::Pair& p, const survey::SurveyRow& r, const survey::ClearanceLevels& l) {
+  topics::Clearance m;
+  const auto& c = p.clearance;
+  m.tool_id = bounded(r.station.tool_id, topics::Clearance::kToolIdMax);
+  m.offset_well = bounded(p.offset, topics::Clearance::kOffsetWellMax);
+  m.station_index = r.index;
+  m.stamp_ns = components::seconds_to_ns(r.station.t_s);
+  m.reference_md_m = c.reference.md_m;
+  m.reference_north_m = c.reference.position.x();
+  m.reference_east_m = c.reference.position.y();
+  m.reference_tvd_m = c.reference.position.z();
+  m.offset_md_m = c.offset.md_m;
+  m.offset_north_m = c.offset.position.x();
+  m.offset_east_m = c.offset.position.y();
+  m.offset_tvd_m = c.offset.position.z();
+  m.centre_to_centre_m = c.centre_to_centre_m;
+  m.horizontal_bearing_deg = c.horizontal_bearing_deg;
+  m.high_side_bearing_deg = c.high_side_bearing_deg;
+  m.reference_sigma_m = c.reference_sigma_m;
+  m.offset_sigma_m = c.offset_sigma_m;
+  m.masd_m = c.masd_m;
+  m.ellipse_separation_m = c.ellipse_separation_m;
+  m.separation_factor = c.separation_factor;
+  m.level = p.level == survey::ClearanceLevel::Alarm     ? topics::CLEARANCE_ALARM
+            : p.level == survey::ClearanceLevel::Warning ? topics::CLEARANCE_WARNING
+                                                         : topics::CLEARANCE_CLEAR;
+  m.warning_sf = l.warning_sf;
+  m.alarm_sf = l.alarm_sf;
+  return m;
+}
+
 survey::DepthReport from_topic(const topics::MeasuredDepth& d) {
   survey::DepthReport r;
   r.t_s = components::ns_to_seconds(d.stamp_ns);

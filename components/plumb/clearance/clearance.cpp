@@ -13,10 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "plumb/components/clearance_options.hpp"
 #include "plumb/components/cli.hpp"
 #include "plumb/survey/clearance.hpp"
 #include "plumb/survey/clearance_well_file.hpp"
 #include "plumb/survey/survey_file.hpp"
+#include "plots/plot_runner.hpp"
 #include "verbs.hpp"
 
 namespace plumb::cli {
@@ -24,13 +26,10 @@ namespace {
 
 struct ClearanceCommandOptions {
   std::string reference;
-  std::vector<std::string> offsets;
-  double reference_radius_m = 0.4572, offset_radius_m = 0.3048;  // 36 in and 24 in holes
-  survey::SeparationRule rule;
-  survey::ClearanceLevels levels;
+  components::ClearanceCliOptions clearance;
   survey::StationListModel model;
   std::string first_station = "surveyed";
-  std::string csv;
+  std::string csv, plot;
 };
 
 std::string clearance_fixed(double v, int decimals) {
@@ -39,17 +38,11 @@ std::string clearance_fixed(double v, int decimals) {
   return buf;
 }
 
-// A well's name: its file's name without the folder and the extensions (.wellpath.csv, .csv).
-std::string clearance_well_name(const std::string& path) {
-  std::string n = std::filesystem::path(path).filename().string();
-  const auto dot = n.find('.');
-  return dot == std::string::npos || dot == 0 ? n : n.substr(0, dot);
-}
-
 std::string clearance_csv_header() {
   return "reference_md_m,reference_north_m,reference_east_m,reference_tvd_m,offset,offset_md_m,offset_north_m,"
          "offset_east_m,offset_tvd_m,centre_to_centre_m,horizontal_bearing_deg,high_side_bearing_deg,"
-         "reference_sigma_m,offset_sigma_m,sigma_s_m,masd_m,ellipse_separation_m,separation_factor,level\n";
+         "reference_sigma_m,offset_sigma_m,sigma_s_m,masd_m,ellipse_separation_m,separation_factor,level,warning_sf,"
+         "alarm_sf\n";
 }
 
 std::string clearance_csv_row(const survey::StationClearance& c, const std::string& offset, const survey::ClearanceLevels& l) {
@@ -60,27 +53,29 @@ std::string clearance_csv_row(const survey::StationClearance& c, const std::stri
     << c.offset.position.y() << ',' << c.offset.position.z() << ',' << c.centre_to_centre_m << ','
     << c.horizontal_bearing_deg << ',' << c.high_side_bearing_deg << ',' << c.reference_sigma_m << ','
     << c.offset_sigma_m << ',' << c.sigma_s_m << ',' << c.masd_m << ',' << c.ellipse_separation_m << ','
-    << c.separation_factor << ',' << survey::to_string(survey::clearance_level(c.separation_factor, l)) << '\n';
+    << c.separation_factor << ',' << survey::to_string(survey::clearance_level(c.separation_factor, l)) << ','
+    << l.warning_sf << ',' << l.alarm_sf << '\n';
   return o.str();
 }
 
 int run_clearance(ClearanceCommandOptions o) {
-  survey::check_rule(o.rule);
-  survey::check_levels(o.levels);
-  if (!(o.reference_radius_m >= 0 && o.offset_radius_m >= 0)) throw std::invalid_argument("hole radii must be >= 0");
+  components::check_clearance_options(o.clearance);
+  const auto& rule = o.clearance.rule;
+  const auto& levels = o.clearance.levels;
   o.model.first_station_surveyed = o.first_station == "surveyed";
-  const auto reference = survey::read_clearance_well(o.reference, clearance_well_name(o.reference), o.reference_radius_m, o.model);
+  const auto reference = survey::read_clearance_well(o.reference, components::clearance_well_name(o.reference),
+                                                     o.clearance.reference_radius_m, o.model);
   std::vector<survey::ClearanceWellFile> offsets;
-  for (const auto& path : o.offsets) {
-    offsets.push_back(survey::read_clearance_well(path, clearance_well_name(path), o.offset_radius_m, o.model));
+  for (const auto& path : o.clearance.offsets) {
+    offsets.push_back(survey::read_clearance_well(path, components::clearance_well_name(path), o.clearance.offset_radius_m, o.model));
     std::cerr << "plumb clearance: " << offsets.back().well.name << ": " << offsets.back().well.stations.size()
               << " station(s), error model " << offsets.back().error_model << '\n';
   }
   std::string table = clearance_csv_header();
   std::cout << "# reference " << reference.well.name << " (" << reference.well.stations.size() << " stations, error model "
-            << reference.error_model << "); k " << o.rule.k << ", sigma_pa " << o.rule.sigma_pa_m << " m, S_m "
-            << o.rule.surface_margin_m << " m; warning SF < " << o.levels.warning_sf << ", alarm SF < "
-            << o.levels.alarm_sf << '\n';
+            << reference.error_model << "); k " << rule.k << ", sigma_pa " << rule.sigma_pa_m << " m, S_m "
+            << rule.surface_margin_m << " m; warning SF < " << levels.warning_sf << ", alarm SF < " << levels.alarm_sf
+            << '\n';
   std::cout << "reference_md_m  nearest_offset  offset_md_m  centre_to_centre_m  ellipse_separation_m  separation_factor  level\n";
   double min_sf = std::numeric_limits<double>::infinity();
   std::string min_where;
@@ -90,14 +85,14 @@ int run_clearance(ClearanceCommandOptions o) {
     survey::StationClearance worst;
     std::string worst_name;
     for (const auto& off : offsets) {
-      const auto c = survey::station_clearance(station, reference.well.radius_m, off.well, o.rule);
-      table += clearance_csv_row(c, off.well.name, o.levels);
+      const auto c = survey::station_clearance(station, reference.well.radius_m, off.well, rule);
+      table += clearance_csv_row(c, off.well.name, levels);
       if (worst_name.empty() || c.separation_factor < worst.separation_factor) {
         worst = c;
         worst_name = off.well.name;
       }
     }
-    const auto level = survey::clearance_level(worst.separation_factor, o.levels);
+    const auto level = survey::clearance_level(worst.separation_factor, levels);
     warnings += level == survey::ClearanceLevel::Warning;
     alarms += level == survey::ClearanceLevel::Alarm;
     if (worst.separation_factor < min_sf) {
@@ -110,6 +105,13 @@ int run_clearance(ClearanceCommandOptions o) {
               << "  " << survey::to_string(level) << '\n';
   }
   if (!o.csv.empty()) survey::write_file_atomically(o.csv, table);
+  if (!o.plot.empty()) {
+    // Drawn from the CSV; without --csv, from a copy beside the plot.
+    const std::string csv = o.csv.empty() ? o.plot + ".clearance.csv" : o.csv;
+    if (o.csv.empty()) survey::write_file_atomically(csv, table);
+    run_plot("clearance", csv, o.plot);
+    if (o.csv.empty()) std::filesystem::remove(csv);
+  }
   std::cerr << "plumb clearance: " << reference.well.stations.size() << " reference station(s) against "
             << offsets.size() << " offset well(s): smallest SF " << clearance_fixed(min_sf, 3) << " (" << min_where
             << "); " << warnings << " station(s) at warning, " << alarms << " at alarm\n";
@@ -127,16 +129,7 @@ void add_clearance_verb(CLI::App& app, Verbs& verbs) {
                                                   "north_m,east_m,tvd_m place it)")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("--offset", o->offsets, "an offset well (repeat for each), as the reference")
-      ->required()
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--reference-radius", o->reference_radius_m, "reference hole radius, m")->capture_default_str();
-  cmd->add_option("--offset-radius", o->offset_radius_m, "offset holes' radius, m")->capture_default_str();
-  cmd->add_option("--k", o->rule.k, "confidence scaling factor k of the separation rule")->capture_default_str();
-  cmd->add_option("--sigma-pa", o->rule.sigma_pa_m, "projection-ahead uncertainty, m (1 sigma)")->capture_default_str();
-  cmd->add_option("--surface-margin", o->rule.surface_margin_m, "surface margin S_m, m")->capture_default_str();
-  cmd->add_option("--warning", o->levels.warning_sf, "warning below this separation factor")->capture_default_str();
-  cmd->add_option("--alarm", o->levels.alarm_sf, "alarm below this separation factor")->capture_default_str();
+  components::add_clearance_options(*cmd, o->clearance, /*offsets_required=*/true);
   cmd->add_option("--error-model", o->model.error_model, "error model of station-list wells: a built-in tool code "
                                                          "(MWD, MWD:rev4, ...) or a tool code file")
       ->capture_default_str();
@@ -150,6 +143,8 @@ void add_clearance_verb(CLI::App& app, Verbs& verbs) {
       ->check(CLI::IsMember({"surveyed", "tie-in"}))
       ->capture_default_str();
   cmd->add_option("--csv", o->csv, "write every reference station against every offset as CSV (written whole or not at all)");
+  cmd->add_option("--plot", o->plot, "draw the travelling cylinder, the plan view and the separation factor along the "
+                                     "reference well (with plumb-plot and python3-matplotlib): .png, .svg or .pdf");
   verbs.add(cmd, [o] { return run_clearance(*o); });
 }
 

@@ -45,6 +45,17 @@ assert row[1] == "offset-03" and abs(float(row[5]) - 0.4566) < 0.001, row
 PY
 grep -q "smallest SF 0.010 (offset-09 at reference MD 2490.00 m)" "$work/err.txt" && pass "summary names the closest approach" \
   || fail "summary: $(tail -1 "$work/err.txt")"
+# The travelling cylinder, plan and SF plot (plumb-plot, python3-matplotlib) from the same CSV.
+if "$bin/plumb" clearance -r "$set_dir/reference.wellpath.csv" --offset "$set_dir/offset-03.wellpath.csv" \
+     --offset "$set_dir/offset-09.wellpath.csv" "${model[@]}" --plot "$work/clearance.png" > /dev/null 2> "$work/plot.err" &&
+   [ "$(stat -c %s "$work/clearance.png")" -gt 20000 ] && [ ! -e "$work/clearance.png.clearance.csv" ]; then
+  pass "--plot: travelling cylinder drawn ($(stat -c %s "$work/clearance.png") bytes), no CSV left beside it"
+else
+  fail "--plot: $(cat "$work/plot.err")"
+fi
+head -4 "$set_dir/reference.wellpath.csv" > "$work/not_pairs.csv"
+expect_failure "plumb-plot clearance on a CSV that is not plumb clearance's" "no column 'reference_md_m': expected the CSV of plumb clearance --csv" \
+  "$bin/plumb-plot" clearance "$work/not_pairs.csv" -o "$work/x.png"
 
 # The reference as a plumb survey file (grid north, the same model; its first station a tie-in).
 "$bin/plumb" survey --stations "$set_dir/reference.wellpath.csv" --reference grid --declination 0 --convergence 0 \

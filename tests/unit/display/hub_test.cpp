@@ -75,6 +75,27 @@ TEST(DisplayHub, JoiningBrowserGetsHistoryLatestStatusesAndStations) {
   EXPECT_NE(update->find("{\"i\":0},{\"i\":1}"), std::string::npos) << *update;
 }
 
+// A clearance is a state: the newest per tool and offset well, to a browser already there and to
+// one that joins later.
+TEST(DisplayHub, ClearancesKeepTheNewestPerOffsetWell) {
+  Hub hub;
+  auto early = hub.join();
+  ASSERT_TRUE(early->next());  // hello
+  hub.clearance("rig/offset-1", "{\"sf\":3}");
+  hub.clearance("rig/offset-1", "{\"sf\":2}");
+  hub.clearance("rig/offset-2", "{\"sf\":9}");
+  const auto update = early->next();
+  ASSERT_TRUE(update);
+  EXPECT_NE(update->find("\"clearance\":[{\"sf\":2},{\"sf\":9}]"), std::string::npos) << *update;
+  auto late = hub.join();
+  ASSERT_TRUE(late->next());  // hello
+  const auto first = late->next();
+  ASSERT_TRUE(first);
+  EXPECT_EQ(count(*first, "{\"sf\":"), 2) << *first;
+  EXPECT_EQ(first->find("{\"sf\":3}"), std::string::npos) << "an older clearance of the same well is gone";
+  EXPECT_EQ(hub.stats().clearances, 3u);
+}
+
 TEST(DisplayHub, FramesAreThrottledAndIdleLinksGetHeartbeats) {
   HubOptions o;
   o.min_gap = std::chrono::milliseconds(50);

@@ -8,8 +8,10 @@ const assert = require("assert");
 const page = fs.readFileSync(process.argv[2], "utf8");
 const begin = page.indexOf("// PURE BEGIN"), end = page.indexOf("// PURE END");
 assert(begin > 0 && end > begin, "the page marks its pure part");
-const {angleText, wrapsAround, LENGTH_UNITS, cardTitle, counterText, tickStep} = new Function(
-  page.slice(begin, end) + "\nreturn {angleText, wrapsAround, LENGTH_UNITS, cardTitle, counterText, tickStep};")();
+const {angleText, wrapsAround, LENGTH_UNITS, cardTitle, counterText, tickStep, nearestOffsets, stationSd,
+       TOOLFACE_TRACE_MAX_RPM, depthText} = new Function(page.slice(begin, end) +
+  "\nreturn {angleText, wrapsAround, LENGTH_UNITS, cardTitle, counterText, tickStep, nearestOffsets, stationSd, " +
+  "TOOLFACE_TRACE_MAX_RPM, depthText};")();
 
 let checks = 0;
 const check = (ok, what) => { assert(ok, what); ++checks; };
@@ -22,6 +24,27 @@ check(angleText(359.994) === "359.99", "359.994 shows as 359.99");
 check(angleText(-90) === "270.00", "-90 shows as 270.00");
 check(angleText(45.5) === "45.50", "45.5 shows as 45.50");
 check(angleText(NaN) === "-" && angleText(null) === "-", "no number: -");
+
+// The nearest offset: per tool, the smallest SF of its newest station (an older station's smaller
+// SF no longer counts; no number is the least clear).
+{
+  const n = nearestOffsets([{tool: "a", i: 3, off: "w1", sf: 1.2}, {tool: "a", i: 4, off: "w2", sf: 2.5},
+                            {tool: "a", i: 4, off: "w1", sf: 1.9}, {tool: "b", i: 1, off: "w1", sf: 5},
+                            {tool: "b", i: 1, off: "w3", sf: null}]);
+  check(n.get("a").off === "w1" && n.get("a").sf === 1.9, "tool a: w1 at its newest station: " + JSON.stringify(n.get("a")));
+  check(n.get("b").off === "w3", "tool b: the clearance without a number counts as the least clear");
+}
+
+// A station shows the survey's sigma (0.35 deg), not the estimator's (0.001 deg: 45.02 +- 0.00).
+check(stationSd(0.35, 0.001) === 0.35, "the survey's total sigma");
+check(stationSd(0, 0.02) === 0.02 && stationSd(null, 0.02) === 0.02, "without it, the measurement's");
+check(TOOLFACE_TRACE_MAX_RPM > 0 && TOOLFACE_TRACE_MAX_RPM < 30, "the toolface trace stops for a tool turning at 30 rpm");
+
+// The bit depth on a tool's card: valid only, in the chosen unit, with what the string does.
+check(depthText({md: 1234.5, flags: 1}, 1, "m") === " · depth 1234.50 m (still)", depthText({md: 1234.5, flags: 1}, 1, "m"));
+check(depthText({md: 304.8, flags: 3}, 1 / 0.3048, "ft") === " · depth 1000.00 ft (moving)", "feet, moving");
+check(depthText({md: 10, flags: 5}, 1, "m").endsWith("(in slips)"), "in slips");
+check(depthText({md: 10, flags: 0}, 1, "m") === "" && depthText(undefined, 1, "m") === "", "no valid depth: nothing");
 
 // The history breaks its line where the angle wraps, not elsewhere.
 check(wrapsAround(359, 1) && wrapsAround(2, 358), "359 -> 1 and 2 -> 358 wrap");

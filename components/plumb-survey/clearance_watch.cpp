@@ -1,0 +1,83 @@
+#include "clearance_watch.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+#include <utility>
+
+namespace plumb::survey_component {
+namespace {
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+std::string describe(const ClearanceWatch::Pair& p, const survey::ClearanceLevels& levels) {
+  const auto& c = p.clearance;
+  std::string line = "clearance " + survey::to_string(p.level) + " at MD " + fixed(c.reference.md_m, 2) + " m: SF " +
+                     fixed(c.separation_factor, 2) + " against " + p.offset + " (its MD " + fixed(c.offset.md_m, 1) +
+                     " m, " + fixed(c.centre_to_centre_m, 2) + " m centre to centre, ellipse separation " +
+                     fixed(c.ellipse_separation_m, 2) + " m)";
+  if (p.level == survey::ClearanceLevel::Warning) line += "; warning below SF " + fixed(levels.warning_sf, 2);
+  if (p.level == survey::ClearanceLevel::Alarm) line += "; alarm below SF " + fixed(levels.alarm_sf, 2);
+  return line;
+}
+
+}  // namespace
+
+ClearanceWatch::ClearanceWatch(const components::ClearanceCliOptions& options, const survey::StationListModel& model,
+                               survey::AzimuthReference survey_reference, std::function<void(const std::string&)> note)
+    : options_(options), note_(std::move(note)) {
+  if (options_.offsets.empty()) return;
+  components::check_clearance_options(options_);
+  if (survey_reference == survey::AzimuthReference::Magnetic)
+    throw std::invalid_argument("--offset needs a survey in true or grid north (--reference true or grid): a magnetic "
+                                "north moves with the field, and the wells share no frame in it");
+  for (const auto& path : options_.offsets) {
+    offsets_.push_back(survey::read_clearance_well(path, components::clearance_well_name(path), options_.offset_radius_m, model));
+    const auto& w = offsets_.back();
+    note_("offset well " + w.well.name + ": " + std::to_string(w.well.stations.size()) + " station(s) from " + path +
+          ", error model " + w.error_model);
+  }
+  note_("clearance by the ISCWSA separation rule (k " + fixed(options_.rule.k, 2) + ", sigma_pa " +
+        fixed(options_.rule.sigma_pa_m, 2) + " m, S_m " + fixed(options_.rule.surface_margin_m, 2) + " m): warning below SF " +
+        fixed(options_.levels.warning_sf, 2) + ", alarm below " + fixed(options_.levels.alarm_sf, 2) + ", on " +
+        "plumb/clearance and plumb/status");
+}
+
+std::vector<ClearanceWatch::Pair> ClearanceWatch::at_station(const std::vector<survey::SurveyRow>& rows) {
+  std::vector<Pair> pairs;
+  if (offsets_.empty() || rows.empty()) return pairs;
+  // The newest station's covariance is the survey's there: later stations do not change it.
+  const survey::WellPoint station = survey::well_points({rows.back()}).front();
+  const Pair* worst = nullptr;
+  pairs.reserve(offsets_.size());
+  for (const auto& offset : offsets_) {
+    Pair p;
+    p.offset = offset.well.name;
+    p.clearance = survey::station_clearance(station, options_.reference_radius_m, offset.well, options_.rule);
+    p.level = survey::clearance_level(p.clearance.separation_factor, options_.levels);
+    pairs.push_back(std::move(p));
+  }
+  for (const auto& p : pairs)
+    if (!worst || !(p.clearance.separation_factor >= worst->clearance.separation_factor)) worst = &p;
+  ++stations_;
+  warning_stations_ += worst->level == survey::ClearanceLevel::Warning;
+  alarm_stations_ += worst->level == survey::ClearanceLevel::Alarm;
+  const std::string line = describe(*worst, options_.levels);
+  if (worst->level != level_) note_(line + (worst->level == survey::ClearanceLevel::Clear ? " (clear again)" : ""));
+  level_ = worst->level;
+  status_line_ = level_ == survey::ClearanceLevel::Clear ? std::string() : line;
+  return pairs;
+}
+
+std::vector<std::pair<std::string, std::uint64_t>> ClearanceWatch::counters() const {
+  if (offsets_.empty()) return {};
+  return {{"clearance_offsets", offsets_.size()},
+          {"clearance_level", static_cast<std::uint64_t>(level_)},  // 0 clear, 1 warning, 2 alarm
+          {"clearance_warning_stations", warning_stations_},
+          {"clearance_alarm_stations", alarm_stations_}};
+}
+
+}  // namespace plumb::survey_component
