@@ -56,12 +56,13 @@ Family dropouts_and_repeats() {
 }
 
 // Met: every run answers, each angle's sigma and the end position's are honest, the tactical axis
-// within 0.2 deg. Not met (docs/navigator.md, "Samples lost and sent twice"): the end position,
-// 6.2 % of MD, and the MEMS axis, 1.2 deg. Their measured levels are the bounds here.
+// within 0.2 deg, the end position within 1 % of MD (0.97-0.98 %; 6.2 % before the gaps' readings
+// were made up in the navigation frame). Not met (docs/navigator.md, "Samples lost and sent
+// twice"): the MEMS axis, 0.81 deg; its measured level is the bound here.
 TEST(StrapdownFieldFamilies, DropoutsAndRepeats) {
-  for (const auto& [grade, max_axis] : {std::tuple{sim::ImuGrade::tactical(), 0.2}, std::tuple{sim::ImuGrade::mems(), 1.5}}) {
+  for (const auto& [grade, max_axis] : {std::tuple{sim::ImuGrade::tactical(), 0.2}, std::tuple{sim::ImuGrade::mems(), 0.85}}) {
     const FamilyResult f = sweep(("dropouts and repeats, " + grade.name).c_str(), grade, 100, dropouts_and_repeats());
-    expect_field_targets(f, grade.name, max_axis, /*end_rms_z=*/3.0, /*end_pct=*/7.5);
+    expect_field_targets(f, grade.name, max_axis);
   }
 }
 

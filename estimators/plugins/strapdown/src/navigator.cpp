@@ -120,17 +120,19 @@ void Navigator::navigate(const Input& in, const StillnessState& still, std::vect
   // (A drilling tool's. A foot's gaps, a few samples within a stride, are bridged as before: with
   // the allowance the short walk of tests/data/walks ended 0.176 m off instead of 0.138 m.)
   if (gap && filter_.drilling_tool()) {
-    faults_.bridge(*prev_, in, dt_nominal, filter_.state().q.toRotationMatrix());
-    // The gap's step starts from the force's recent mean, not from one reading's vibration (a
-    // foot's force over a tenth of a second is its stride).
-    Input before = from;
-    before.f = faults_.recent_force();
-    filter_.step(before, at, nullptr, config_.samples_are_means, dt_nominal);
+    const Eigen::Matrix3d c_bn = filter_.mechanization().tool_to_nav();
+    faults_.bridge(*prev_, in, dt_nominal, c_bn);
+    // Through the gap in steps of the nominal interval, on readings made up (stream_faults.hpp).
+    const std::vector<Input> made_up = faults_.gap_readings(from, at, c_bn, dt_nominal);
+    for (std::size_t k = 1; k < made_up.size(); ++k)
+      filter_.step(made_up[k - 1], made_up[k], nullptr, config_.samples_are_means, dt_nominal);
   } else {
     filter_.step(from, at, from2 ? &*from2 : nullptr, config_.samples_are_means, checks_.dt_nominal());
   }
-  faults_.observe(in, step_dt, dt_nominal);
-  if (in.clipped != 0) ranges_.integrate(in, step_dt, filter_.state().q.toRotationMatrix());
+  // At this reading's attitude: the filter's state is the last full update's, degrees behind a
+  // turning tool.
+  faults_.observe(in, step_dt, dt_nominal, filter_.mechanization().tool_to_nav(in.f));
+  if (in.clipped != 0) ranges_.integrate(in, step_dt, filter_.mechanization().tool_to_nav());
   if (in.depth) {
     stops_.take_depth(in.t, *in.depth, prev_->depth.has_value(), filter_);
     unseen_.note_depth(in.t);

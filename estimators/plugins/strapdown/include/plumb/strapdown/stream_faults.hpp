@@ -5,6 +5,7 @@
 // it was bridged.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -19,9 +20,10 @@ namespace plumb::strapdown {
 class StreamFaults {
  public:
   void reset();
-  // Every navigable reading, dt after the one before: the spread of the readings about their own
-  // local trend, from second differences over evenly spaced readings.
-  void observe(const InputReading& in, double dt, double dt_nominal);
+  // Every navigable reading, dt after the one before, with its specific force in the navigation
+  // frame (f_n): the spread of the readings about their own local trend, from second differences
+  // over evenly spaced readings, and the specific force's recent mean in the navigation frame.
+  void observe(const InputReading& in, double dt, double dt_nominal, const Eigen::Vector3d& f_n);
   // A gap of dt (the step that ends at t) where dt_nominal was due, as the input checks see it:
   // counted, and said once.
   void lost(double t, double dt, double dt_nominal, Counters& counters);
@@ -35,9 +37,17 @@ class StreamFaults {
   // The epoch's process noise (dt long) with what the gaps since the last epoch cost; forgets them.
   ProcessNoise widen(const ProcessNoise& base, double dt);
   std::vector<std::string> take_notices();
-  // The specific force of the last readings, averaged over a tenth of a second: what a gap's step
-  // starts from instead of the last reading's, whose vibration would be held through the gap.
-  const Eigen::Vector3d& recent_force() const { return f_mean_; }
+  // The readings a drilling tool's mechanization steps through across a gap, from `prev` (the
+  // reading before it, its attitude c_bn) to `in`: one per nominal interval, the rate on its line
+  // between the two, the specific force the recent mean held in the navigation frame (gravity's
+  // reaction and the string's small accelerations) and seen from the attitude the rates turn the
+  // tool to. Not one step: through a turn of hundreds of degrees (a second at 30 rpm) a step
+  // integrates the force as if the turn were small (one 1.3 s gap put the position 0.78 m off). Not
+  // the readings either side: one reading holds the bit's vibration (1 m/s^2 and more), and a line
+  // to it over seconds is a velocity error of metres per second. The first is prev's instant, the
+  // last in's.
+  std::vector<InputReading> gap_readings(const InputReading& prev, const InputReading& in, const Eigen::Matrix3d& c_bn,
+                                         double dt_nominal) const;
 
  private:
   struct Recent {
@@ -47,8 +57,8 @@ class StreamFaults {
   Recent r0_, r1_;
   int recent_ = 0;
   double spread_w2_ = 0, spread_f2_ = 0;
-  Eigen::Vector3d f_mean_ = Eigen::Vector3d::Zero();
-  bool f_mean_set_ = false;  // mean square per axis about the local trend
+  Eigen::Vector3d f_mean_n_ = Eigen::Vector3d::Zero();  // the recent mean force, navigation frame
+  std::uint64_t f_mean_count_ = 0;
   double pending_att_ = 0, pending_vel_ = 0;  // variance per axis to add at the next epoch
   Eigen::Matrix<double, 6, 1> pending_turn_ = Eigen::Matrix<double, 6, 1>::Zero();
   Eigen::Matrix3d pending_force_ = Eigen::Matrix3d::Zero();
