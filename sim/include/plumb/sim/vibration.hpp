@@ -25,9 +25,10 @@ struct Vibration {
   // Shock length; the sampled shock is never shorter than two sample periods (the sensor's
   // anti-alias filter spreads it), so every shock shows in the samples.
   double shock_duration_s = 0.002;
-  // A shock as one full sine cycle (out and back: no net change of velocity, as a tool that is
-  // struck and rebounds) instead of a half-sine (a net change of 2 peak duration / pi that the
-  // truth does not have). Sampled over at least four sample periods. Off: the half-sine, as before.
+  // A shock that rebounds: the tool struck out to the wall and back, a displacement that ends where
+  // it began (no net change of velocity nor of position: the truth's path does not carry shocks),
+  // instead of a half-sine (a net change of velocity of 2 peak duration / pi that the truth does not
+  // have). Sampled over at least four sample periods. Off: the half-sine, as before.
   bool shock_rebounds = false;
 };
 
