@@ -20,7 +20,7 @@ start_work_with_programs
 mkdir -p "$artifacts"
 
 start_display() {  # start_display PORT LOG: background plumb-display; its pid in $display
-  "$bin/plumb-display" --transport "$display_t" --port "$1" > "$2" 2>&1 &
+  "$bin/plumb-display" --transport "$display_t" --port "$1" --foxglove-port 0 > "$2" 2>&1 &
   display=$!
   pids+=($display)
   wait_for "$2" "serving http://127.0.0.1:[0-9]+/" 20
