@@ -156,7 +156,7 @@ TEST(FoxgloveHub, ASlowClientLosesItsOldestMessagesCountedAndKeepsTheNewest) {
   EXPECT_EQ(fast->dropped(), 0u);
   const auto frames = fox_take(*slow);
   ASSERT_EQ(frames.size(), 3u);
-  for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(frames[k].data.back(), 7 + k);  // the newest, in order
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(static_cast<std::size_t>(frames[k].data.back()), 7 + k);  // the newest, in order
   EXPECT_EQ(hub.stats().dropped, 7u);
   hub.leave(slow);
   EXPECT_EQ(hub.stats().dropped, 7u);  // still counted once the client has gone
