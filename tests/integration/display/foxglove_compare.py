@@ -4,13 +4,16 @@
 serverInfo, every channel's encoding (cdr), schema encoding (omgidl) and IDL type name, the share of
 the 1 kHz sensor stream received (>= 99 %, or every loss counted by plumb-display's
 foxglove_dropped), no message after unsubscribing. Prints ok/FAIL lines; exit 1 on any failure.
-usage: foxglove_compare.py CLIENT.json RAW_ECHO.csv ATTITUDE_ECHO.csv RAW_TOPIC ATTITUDE_TOPIC INCLINATION"""
+The shipped Foxglove layout's message paths are checked against what was decoded: each names an
+advertised topic and a field its messages have.
+usage: foxglove_compare.py CLIENT.json RAW_ECHO.csv ATTITUDE_ECHO.csv RAW_TOPIC ATTITUDE_TOPIC INCLINATION LAYOUT.json"""
 import csv
 import json
 import math
+import re
 import sys
 
-client_path, raw_csv, att_csv, raw_topic, att_topic, inclination = sys.argv[1:7]
+client_path, raw_csv, att_csv, raw_topic, att_topic, inclination, layout_path = sys.argv[1:8]
 inclination = float(inclination)
 r = json.load(open(client_path))
 fails = 0
@@ -107,4 +110,32 @@ incs = [a["inclination_deg"] for a in att["values"] if a["flags"] & 1]
 check(incs and all(abs(i - inclination) < 0.2 for i in incs),
       f"{att_topic}: inclination decoded within 0.2 deg of the simulated {inclination} deg "
       f"({len(incs)} valid, {min(incs, default=float('nan')):.3f} .. {max(incs, default=float('nan')):.3f})")
+
+# The layout: every plot's path and the raw-message panel's topic, on what the client decoded.
+layout = json.load(open(layout_path))
+paths = [p["value"] for c in layout["configById"].values() for p in c.get("paths", [])]
+paths += [c["topicPath"] for c in layout["configById"].values() if "topicPath" in c]
+decoded = dict(r["topics"])
+decoded["plumb/status"] = {"values": list(r["statuses"].values())}
+bad = []
+for path in paths:
+    topic, _, rest = path.partition(".")
+    if topic not in channels:
+        bad.append(f"{path}: no channel {topic}")
+        continue
+    if not rest:
+        continue
+    values = decoded.get(topic, {}).get("values") or []
+    if not values:
+        bad.append(f"{path}: nothing decoded on {topic}")
+        continue
+    v = values[-1]
+    for part in re.findall(r"[A-Za-z_][A-Za-z0-9_]*|\[\d+\]", rest):
+        v = v[int(part[1:-1])] if part.startswith("[") else v.get(part) if isinstance(v, dict) else None
+        if v is None:
+            break
+    if not isinstance(v, (int, float)):
+        bad.append(f"{path}: not a number ({v!r})")
+check(paths and not bad, f"the Foxglove layout's {len(paths)} paths name advertised topics and numeric fields" +
+      ("" if not bad else ": " + "; ".join(bad)))
 sys.exit(1 if fails else 0)

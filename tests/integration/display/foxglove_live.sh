@@ -50,20 +50,21 @@ expect_error "a second display on the same Foxglove port" \
 output_matches "Foxglove off" "$bin/plumb-display" --transport "$display_t" --port 0 --no-foxglove --duration 1 &&
   pass "--no-foxglove serves the page only, and says so" || fail "--no-foxglove"
 
-# Truth: I = 2 deg, A = 200 deg, still (the static estimator's case), 1000 samples a second, one a
-# message: a 1 kHz topic. Windows of 0.5 s: two estimates a second.
+# Truth: I = 2 deg, A = 200 deg, 240 rpm (two turns a window), 1000 samples a second, one a message:
+# a 1 kHz topic. Windows of 0.5 s: two estimates a second. The compensated estimator: the one the
+# shipped Foxglove layout plots.
 inc=2 azi=200 run_s=14
-"$bin/plumb-estimator" --transport "$host_t" --input plumb/sensor/raw --plugin static --window 0.5 --tool-id rig1 -q \
+"$bin/plumb-estimator" --transport "$host_t" --input plumb/sensor/raw --plugin compensated --window 0.5 --tool-id rig1 -q \
   > "$work/host.log" 2>&1 &
 pids+=($!)
 "$bin/plumb" topic echo plumb/sensor/raw --csv --transport "$display_t" --timeout $((run_s + 6)) > "$work/raw.csv" 2> "$work/raw.err" &
 echo_raw=$!
 pids+=($echo_raw)
-"$bin/plumb" topic echo plumb/attitude/static --csv --transport "$display_t" --wait 20 --timeout $((run_s + 6)) \
+"$bin/plumb" topic echo plumb/attitude/compensated --csv --transport "$display_t" --wait 20 --timeout $((run_s + 6)) \
   > "$work/attitude.csv" 2> "$work/attitude.err" &
 echo_att=$!
 pids+=($echo_att)
-"$bin/plumb-sim" --transport "$sim_t" --tool-id rig1 --inclination $inc --azimuth $azi --rpm 0 --duration $run_s \
+"$bin/plumb-sim" --transport "$sim_t" --tool-id rig1 --inclination $inc --azimuth $azi --rpm 240 --duration $run_s \
   --rate-hz 1000 --batch 1 --rate realtime --snr-accel 40 --snr-mag 40 --g 10 --field 48.4 --dip 45.5 \
   --wait-subscribers 20 > "$work/sim.log" 2>&1 &
 pids+=($!)
@@ -71,11 +72,11 @@ pids+=($!)
 # stays for most of the run.
 wait_for "$work/raw.csv" "^[0-9]+," 30 || fail "no sensor data reached plumb topic echo"
 node "$here/foxglove_client.js" "ws://127.0.0.1:$port/" $((run_s - 5)) "$work/client.json" \
-  plumb/sensor/raw plumb/attitude/static plumb/status > "$work/client.log" 2>&1 || fail "the node client failed: $(tail -5 "$work/client.log")"
+  plumb/sensor/raw plumb/attitude/compensated plumb/status > "$work/client.log" 2>&1 || fail "the node client failed: $(tail -5 "$work/client.log")"
 wait "$echo_raw" "$echo_att"
 if [ -s "$work/client.json" ]; then
   python3 "$here/foxglove_compare.py" "$work/client.json" "$work/raw.csv" "$work/attitude.csv" plumb/sensor/raw \
-    plumb/attitude/static $inc || fail "Foxglove client against plumb topic echo"
+    plumb/attitude/compensated $inc "$here/../../../examples/foxglove/plumb-layout.json" || fail "Foxglove client against plumb topic echo"
 else
   fail "the client wrote nothing"
 fi
