@@ -5,6 +5,7 @@
 // with the channel's own schema, unsubscribes the first topic near the end and checks that it
 // stops, and writes what it decoded as JSON for the comparison with `plumb topic echo --csv`.
 // usage: NODE_PATH=DIR/node_modules node foxglove_client.js URL SECONDS OUT.json TOPIC...
+// TOPIC "*" subscribes to every channel (the benchmark's client); SIGTERM ends it early, writing the JSON.
 "use strict";
 const { FoxgloveClient } = require("@foxglove/ws-protocol");
 const WebSocket = require("ws");
@@ -50,7 +51,7 @@ client.on("advertise", (channels) => {
       continue;
     }
     readers.set(c.id, { topic: c.topic, reader });
-    if (topics.includes(c.topic) || (c.topic === "plumb/status" && topics.includes("plumb/status"))) {
+    if (topics.includes(c.topic) || topics.includes("*")) {
       bySubscription.set(client.subscribe(c.id), c.topic);
     }
   }
@@ -72,15 +73,17 @@ client.on("message", ({ subscriptionId, timestamp, data }) => {
   ++t.messages;
   t.last_rx_ns = Number(timestamp);
   if (topic === "plumb/status") result.statuses[`${m.component}@${m.host}`] = m;
-  else t.values.push(m);
+  else if (!topics.includes("*")) t.values.push(m);
 });
 
 setTimeout(() => {
   // The first topic is unsubscribed for the last second: nothing of it may come after that.
   for (const [id, topic] of bySubscription) if (topic === topics[0]) { client.unsubscribe(id); unsubscribedAt = Date.now(); }
 }, Math.max(0, seconds - 1.5) * 1000);
-setTimeout(() => {
+function end() {
   client.close();
   fs.writeFileSync(outPath, JSON.stringify(result));
   process.exit(0);
-}, seconds * 1000);
+}
+setTimeout(end, seconds * 1000);
+process.on("SIGTERM", end);
