@@ -104,7 +104,9 @@ void FoxgloveFeed::discover() {
 void FoxgloveFeed::follow_subscriptions() {
   const std::set<std::uint32_t> wanted = hub_.wanted();
   std::erase_if(streams_, [&](const auto& s) { return !wanted.count(s.first); });
-  for (const auto& [name, topic] : topics_) {
+  for (const auto& entry : topics_) {
+    const std::string& name = entry.first;  // not a structured binding: the lambda below captures it
+    const Topic& topic = entry.second;
     if (!wanted.count(topic.channel) || streams_.count(topic.channel)) continue;
     auto qos = transport::default_qos_for_topic(name);
     if (qos.history == transport::History::KeepLast) qos.depth = std::max(qos.depth, kFoxgloveReaderDepth);
