@@ -80,6 +80,15 @@ if [ -s "$work/client.json" ]; then
 else
   fail "the client wrote nothing"
 fi
+# The simulator has ended: its topic's channel is gone (its last writer left), the estimator's stays.
+sleep 2
+node "$here/foxglove_client.js" "ws://127.0.0.1:$port/" 2 "$work/after.json" > "$work/after.log" 2>&1
+python3 - "$work/after.json" <<'PY' && pass "after the simulator: plumb/sensor/raw unadvertised, plumb/attitude/compensated still there" || fail "channels after the simulator ended"
+import json, sys
+topics = {c["topic"] for c in json.load(open(sys.argv[1]))["channels"]}
+print("     channels after the simulator ended:", ", ".join(sorted(topics)))
+sys.exit(0 if "plumb/sensor/raw" not in topics and "plumb/sim/truth" not in topics and "plumb/attitude/compensated" in topics else 1)
+PY
 # The display's own counters on plumb/status after the client has gone.
 "$bin/plumb" topic echo plumb/status --transport "$display_t" --timeout 5 > "$work/status.txt" 2>&1
 grep -q "foxglove_clients_total" "$work/status.txt" && pass "plumb-display's plumb/status counts Foxglove clients" ||
