@@ -150,7 +150,9 @@ TEST(FoxgloveHub, ASlowClientLosesItsOldestMessagesCountedAndKeepsTheNewest) {
   hub.receive(fast, subscribe);
   for (std::uint8_t i = 0; i < 10; ++i) {
     hub.publish(raw, i, fox_bytes({i}));
-    if (i % 2 == 1) EXPECT_EQ(fox_take(*fast).size(), 2u);  // a client that keeps up loses nothing
+    if (i % 2 == 1) {
+      EXPECT_EQ(fox_take(*fast).size(), 2u);  // a client that keeps up loses nothing
+    }
   }
   EXPECT_EQ(slow->dropped(), 7u);
   EXPECT_EQ(fast->dropped(), 0u);
