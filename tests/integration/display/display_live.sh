@@ -70,5 +70,5 @@ wait "$browser" || rc=$?
 cat "$work/browser.log"
 if [ $rc -eq 77 ]; then exit 77; fi
 [ $rc -eq 0 ] && pass "the page showed what the simulator did" || {
-  fail "browser checks"; tail -5 "$work/display.log" "$work/host.log" "$work/sim.log"; }
+  fail "browser checks"; tail -n 5 "$work/display.log" "$work/host.log" "$work/sim.log"; }
 finish
