@@ -26,11 +26,13 @@ quiet_machine() {  # waits until the 1-min load average is below 2.5
   while awk '{ exit !($1 >= 2.5) }' /proc/loadavg; do sleep 10; done
 }
 
-run_bench() {  # run_bench LABEL
+run_bench() {  # run_bench LABEL [plumb-bench-transport options...]
   quiet_machine
   echo "## $1 (load $(cut -d' ' -f1-3 /proc/loadavg), $(date -u +%H:%M:%S))"
+  shift
   "$bin/plumb-bench-transport" --domain "$domain" "$@" > "$work/bench.txt" 2>&1
-  grep -E "^\| (SensorBatch|Attitude).*\| (cyclonedds|fastdds) -> " "$work/bench.txt"
+  grep -E "^\| (SensorBatch|Attitude).*\| (native )?(cyclonedds|fastdds) -> " "$work/bench.txt"
+  grep -E "load|busy" "$work/bench.txt" | head -3
 }
 
 with_foxglove() {
@@ -42,8 +44,10 @@ with_foxglove() {
   client=$!
   sleep 1
   run_bench "with plumb-display and one Foxglove client subscribed to every channel" "${bench_args[@]}"
-  "$bin/plumb" topic echo plumb/status --domain "$domain" --count 1 --timeout 5 2>/dev/null | grep -A1 -E "name: foxglove_(messages|dropped|readers|channels)" |
-    grep -oE "(foxglove_[a-z]+|value: [0-9]+)" | paste -sd' ' | sed 's/^/display counters: /'
+  "$bin/plumb" topic echo plumb/status --csv --domain "$domain" --count 1 --timeout 5 2>/dev/null | python3 -c "
+import csv, sys
+rows = [r for r in csv.DictReader(sys.stdin) if r.get('counters.name', '').startswith('foxglove_')]
+print('display counters: ' + ' '.join(r['counters.name'] + '=' + r['counters.value'] for r in rows))"
   kill "$client"; wait "$client" 2>/dev/null
   python3 -c "import json; r = json.load(open('$work/client.json')); print('client: %d messages on %d channels (%s)' % (sum(t['messages'] for t in r['topics'].values()), len(r['channels']), ', '.join(sorted(r['topics']))))"
   kill "$display"; wait "$display" 2>/dev/null
