@@ -8,6 +8,7 @@
 #   share/plumb/idl/     the IDL files, for teams that generate their own code
 #   share/plumb/config/  DDS configuration files for applications that are not plumb
 #   share/plumb/params/  parameters files (--params-file), share/plumb/launch/ launch files
+#   share/plumb/foxglove/ the Foxglove layout for plumb-display's Foxglove WebSocket server
 #   share/plumb/systemd/env/  templates of /etc/plumb's environment files (the packages' postinst
 #                        copies the missing ones there)
 #   /lib/systemd/system/ the systemd units, when installing to /opt/plumb (the packages); into any
@@ -55,6 +56,9 @@ install(TARGETS plumb-estimator plumb-calibrate plumb-survey plumb-wits plumb-wi
 # The live display, built only where civetweb is installed (components/plumb-display/CMakeLists.txt).
 if(TARGET plumb-display)
   install(TARGETS plumb-display RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT surface)
+  # The Foxglove layout for its Foxglove WebSocket server (examples/foxglove/README.md).
+  install(FILES ${PROJECT_SOURCE_DIR}/examples/foxglove/plumb-layout.json DESTINATION ${PLUMB_INSTALL_DATADIR}/foxglove
+          COMPONENT surface)
 endif()
 
 # Data both computers use: the topic definitions, configuration for stock DDS applications, docs.

@@ -5,9 +5,13 @@
 // stations, the nearest offset, status and counters. docs/display.md.
 #include <chrono>
 #include <iostream>
+#include <optional>
 
 #include "addresses.hpp"
 #include "dds_feed.hpp"
+#include "foxglove_feed.hpp"
+#include "foxglove_hub.hpp"
+#include "foxglove_server.hpp"
 #include "hub.hpp"
 #include "plumb/components/cli.hpp"
 #include "plumb/components/status_reporter.hpp"
@@ -19,6 +23,9 @@ namespace {
 struct Options {
   components::TransportOptions transport;
   WebOptions web;
+  FoxgloveServerOptions foxglove;
+  std::size_t foxglove_queue = FoxgloveOptions{}.queue;
+  bool no_foxglove = false;
   double max_rate = 30;   // frames per second and browser
   double history_s = 600;
   double duration_s = 0;  // 0: until Ctrl-C
@@ -31,22 +38,48 @@ int run(const Options& o) {
   hub_options.min_gap = std::chrono::milliseconds(static_cast<long>(1000.0 / o.max_rate));
   hub_options.history_s = o.history_s;
   Hub hub(hub_options);
+  std::optional<FoxgloveHub> foxglove_hub;
+  if (!o.no_foxglove) {
+    if (o.foxglove_queue == 0) throw std::invalid_argument("--foxglove-queue must be >= 1 message");
+    FoxgloveOptions fo;
+    fo.queue = o.foxglove_queue;
+    foxglove_hub.emplace(fo);
+  }
   auto conn = components::connect(o.transport, "plumb-display");
   DdsFeed feed(*conn.participant, hub);
-  // The server starts after DDS: a port that is taken ends the program before anyone connects to it.
+  // The servers start after DDS: a port that is taken ends the program before anyone connects to it.
   WebServer server(o.web, hub);
+  std::optional<FoxgloveServer> foxglove_server;
+  std::optional<FoxgloveFeed> foxglove_feed;
+  if (foxglove_hub) {
+    FoxgloveServerOptions fs = o.foxglove;
+    fs.bind = o.web.bind;
+    foxglove_server.emplace(fs, *foxglove_hub);
+    foxglove_feed.emplace(*conn.participant, *foxglove_hub);
+  }
   components::install_stop_handler();
   components::StatusReporter status(*conn.participant, "plumb-display");
   // Addresses a browser can open: --bind 0.0.0.0 is every interface, not an address.
   const std::vector<std::string> addresses = page_addresses(o.web.bind, server.port());
   std::cout << "plumb-display: serving " << addresses.front() << " (domain " << conn.options.domain_id << ", "
             << conn.transport->name()
-            << (o.web.bind == "127.0.0.1" ? "; this computer only: --bind 0.0.0.0 to serve the network" : "") << ")"
-            << std::endl;
+            << (o.web.bind == "127.0.0.1" ? "; this computer only: --bind 0.0.0.0 to serve the network" : "") << ")";
+  if (foxglove_server) {
+    std::cout << "; Foxglove on " << page_addresses(o.web.bind, foxglove_server->port(), "ws").front();
+  } else {
+    std::cout << "; Foxglove off";
+  }
+  std::cout << std::endl;
   if (addresses.size() > 1) {
     std::cout << "plumb-display: on every interface:";
     for (std::size_t i = 1; i < addresses.size(); ++i) std::cout << (i == 1 ? " " : ", ") << addresses[i];
     std::cout << std::endl;
+    if (foxglove_server) {
+      const auto ws = page_addresses(o.web.bind, foxglove_server->port(), "ws");
+      std::cout << "plumb-display: Foxglove on every interface:";
+      for (std::size_t i = 1; i < ws.size(); ++i) std::cout << (i == 1 ? " " : ", ") << ws[i];
+      std::cout << std::endl;
+    }
   }
   const auto t0 = std::chrono::steady_clock::now();
   while (!components::g_stop) {
@@ -54,7 +87,7 @@ int run(const Options& o) {
     feed.poll(std::chrono::milliseconds(50));
     if (status.due()) {
       const HubStats s = hub.stats();
-      status.publish("running", {{"browsers", s.browsers},
+      components::CounterList counters{{"browsers", s.browsers},
                                  {"browsers_total", s.browsers_total},
                                  {"attitudes", s.attitudes},
                                  {"statuses", s.statuses},
@@ -63,7 +96,19 @@ int run(const Options& o) {
                                  {"depths", s.depths},
                                  {"topics", feed.topics()},
                                  {"frames_sent", server.frames_sent()},
-                                 {"dropped", s.dropped}});
+                                 {"dropped", s.dropped}};
+      if (foxglove_hub) {
+        const FoxgloveStats f = foxglove_hub->stats();
+        counters.insert(counters.end(), {{"foxglove_clients", f.clients},
+                                         {"foxglove_clients_total", f.clients_total},
+                                         {"foxglove_channels", f.channels},
+                                         {"foxglove_readers", foxglove_feed->readers()},
+                                         {"foxglove_messages", f.messages},
+                                         {"foxglove_dropped", f.dropped},
+                                         {"foxglove_frames_sent", foxglove_server->frames_sent()},
+                                         {"foxglove_refused", foxglove_server->refused()}});
+      }
+      status.publish("running", counters);
     }
   }
   return 0;
@@ -93,8 +138,20 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1000));
   app.add_option("--web-root", o.web.web_root, "serve the page from this folder instead of the copy built in (to edit it)")
       ->check(CLI::ExistingDirectory);
+  app.add_option("--foxglove-port", o.foxglove.port,
+                 "TCP port of the Foxglove WebSocket server (ws://HOST:PORT; 0: any free port, printed at start)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 65535));
+  app.add_flag("--no-foxglove", o.no_foxglove, "serve no Foxglove WebSocket (the page only)");
+  app.add_option("--foxglove-queue", o.foxglove_queue,
+                 "messages queued per Foxglove client; a slower client loses the oldest (counted: foxglove_dropped)")
+      ->capture_default_str();
+  app.add_option("--max-foxglove-clients", o.foxglove.max_clients, "Foxglove clients served at once; more are refused")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
   app.add_option("--duration", o.duration_s, "stop after this many seconds (0: until Ctrl-C)")->capture_default_str();
-  app.footer("Open http://<computer>:<port>/ in any browser (phone, rig-floor screen); the page reconnects by itself.");
+  app.footer("Open http://<computer>:<port>/ in any browser (phone, rig-floor screen); the page reconnects by itself.\n"
+             "In Foxglove: Open connection, Foxglove WebSocket, ws://<computer>:8765 (--foxglove-port).");
   if (const int status = components::parse_command_line(app, argc, argv); status >= 0) return status;
   try {
     return display_component::run(o);

@@ -1,19 +1,14 @@
 #include "web_server.hpp"
 
-#include <arpa/inet.h>
 #include <civetweb.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <unistd.h>
 
-#include <cerrno>
-#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
 #include <vector>
 
+#include "addresses.hpp"
 #include "json.hpp"
 #include "web_assets.hpp"
 
@@ -46,32 +41,6 @@ int send_body(mg_connection* conn, const std::string& type, std::string_view bod
   mg_send_http_ok(conn, type.c_str(), static_cast<long long>(body.size()));
   mg_write(conn, body.data(), body.size());
   return 200;
-}
-
-// Why civetweb could not listen: it only says "Failed to setup server ports" (its log line, with
-// the reason, goes to the log callback in a format of its own), so the address is tried once more
-// here for the system's own words.
-std::string listen_failure(const std::string& address, int port) {
-  in_addr ip{};
-  if (::inet_pton(AF_INET, address.c_str(), &ip) != 1) return "'" + address + "' is not an IPv4 address (see --bind)";
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  if (fd < 0) return std::strerror(errno);
-  const int on = 1;
-  ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);  // as civetweb does
-  sockaddr_in sa{};
-  sa.sin_family = AF_INET;
-  sa.sin_port = htons(static_cast<std::uint16_t>(port));
-  sa.sin_addr = ip;
-  std::string why;
-  if (::bind(fd, reinterpret_cast<const sockaddr*>(&sa), sizeof sa) != 0) {
-    const int e = errno;
-    why = std::strerror(e);
-    if (e == EADDRINUSE) why += " (another program serves this port: choose another --port)";
-    if (e == EADDRNOTAVAIL) why += " (not an address of this computer: see --bind)";
-    if (e == EACCES) why += " (ports below 1024 need root: choose another --port)";
-  }
-  ::close(fd);
-  return why;
 }
 
 int serve_trampoline(mg_connection* conn, void* self) { return static_cast<WebServer*>(self)->serve(conn); }
@@ -111,7 +80,7 @@ WebServer::WebServer(const WebOptions& options, Hub& hub) : options_(options), h
   error.text_buffer_size = sizeof text;
   context_ = mg_start2(&init, &error);
   if (!context_) {
-    std::string why = listen_failure(options_.bind, options_.port);
+    std::string why = listen_failure(options_.bind, options_.port, "--port");
     if (why.empty()) why = text[0] ? text : "civetweb could not start";
     throw std::runtime_error("cannot serve on " + ports + ": " + why);
   }

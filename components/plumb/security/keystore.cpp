@@ -255,8 +255,8 @@ std::optional<Grant> default_grant(const std::string& name) {
        {{"plumb/survey/*", "plumb/clearance", "plumb/status"},
         {"plumb/attitude/*", "plumb/navigation/*", "plumb/depth", "plumb/sensor/*"}}},
       {"plumb-wits", {{"plumb/depth", "plumb/status"}, {}}},
-      {"plumb-display",
-       {{"plumb/status"}, {"plumb/attitude/*", "plumb/survey/*", "plumb/clearance", "plumb/depth", "plumb/status"}}},
+      // Its Foxglove server offers every plumb topic: it may read them all.
+      {"plumb-display", {{"plumb/status"}, {"plumb/*"}}},
       // The plumb tool as an operator's monitor (topic echo / hz, status, record): reads everything.
       {"plumb-monitor", {{}, {"plumb/*"}}},
   };

@@ -43,7 +43,7 @@ def main():
     procs = []
     try:
         log = open(os.path.join(work, "display.log"), "w+")
-        display = subprocess.Popen([os.path.join(a.bin, "plumb-display"), "--port", "0"], stdout=log, stderr=subprocess.STDOUT, env=env)
+        display = subprocess.Popen([os.path.join(a.bin, "plumb-display"), "--port", "0", "--foxglove-port", "0"], stdout=log, stderr=subprocess.STDOUT, env=env)
         procs.append(display)
         port = None
         for _ in range(200):

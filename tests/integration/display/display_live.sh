@@ -20,7 +20,7 @@ start_work_with_programs
 mkdir -p "$artifacts"
 
 start_display() {  # start_display PORT LOG: background plumb-display; its pid in $display
-  "$bin/plumb-display" --transport "$display_t" --port "$1" > "$2" 2>&1 &
+  "$bin/plumb-display" --transport "$display_t" --port "$1" --foxglove-port 0 > "$2" 2>&1 &
   display=$!
   pids+=($display)
   wait_for "$2" "serving http://127.0.0.1:[0-9]+/" 20
@@ -70,5 +70,5 @@ wait "$browser" || rc=$?
 cat "$work/browser.log"
 if [ $rc -eq 77 ]; then exit 77; fi
 [ $rc -eq 0 ] && pass "the page showed what the simulator did" || {
-  fail "browser checks"; tail -5 "$work/display.log" "$work/host.log" "$work/sim.log"; }
+  fail "browser checks"; tail -n 5 "$work/display.log" "$work/host.log" "$work/sim.log"; }
 finish

@@ -14,18 +14,18 @@ start_work_with_programs
 output_matches "0.0.0.0 exposes the page" "$bin/plumb-display" --help && pass "--help says what --bind 0.0.0.0 does" ||
   fail "--help lacks the --bind warning"
 
-"$bin/plumb-display" --transport "$t" --port 0 > "$work/display.log" 2>&1 &
+"$bin/plumb-display" --transport "$t" --port 0 --foxglove-port 0 > "$work/display.log" 2>&1 &
 display=$!
 pids+=($display)
 wait_for "$work/display.log" "serving http://127.0.0.1:[0-9]+/" 20 || { cat "$work/display.log"; fail "plumb-display did not start"; finish; }
 port=$(sed -nE 's|.*serving http://127\.0\.0\.1:([0-9]+)/.*|\1|p' "$work/display.log" | head -1)
 
 expect_error "a second display on the same port" "plumb-display: cannot serve on 127\.0\.0\.1:$port: Address already in use .*choose another --port" \
-  "$bin/plumb-display" --transport "$t" --port "$port"
+  "$bin/plumb-display" --transport "$t" --port "$port" --foxglove-port 0
 expect_error "an address that is not this computer's" "plumb-display: cannot serve on 192\.0\.2\.1:0: .*not an address of this computer" \
-  "$bin/plumb-display" --transport "$t" --port 0 --bind 192.0.2.1
+  "$bin/plumb-display" --transport "$t" --port 0 --foxglove-port 0 --bind 192.0.2.1
 expect_error "a --bind that is no address" "plumb-display: cannot serve on rig-floor:0: 'rig-floor' is not an IPv4 address" \
-  "$bin/plumb-display" --transport "$t" --port 0 --bind rig-floor
+  "$bin/plumb-display" --transport "$t" --port 0 --foxglove-port 0 --bind rig-floor
 expect_error "a port out of range" "plumb-display: --port.*(see plumb-display --help)" "$bin/plumb-display" --port 70000
 code=$(python3 -c "import urllib.request, urllib.error
 try: urllib.request.urlopen('http://127.0.0.1:$port/nosuch.html')
@@ -47,7 +47,7 @@ python3 "$here/ws_clients.py" "127.0.0.1:$port" "$display" --clients 20 --slow 4
 kill -0 "$display" 2>/dev/null && pass "plumb-display still running" || fail "plumb-display died"
 
 # --max-browsers: one more is refused (its page retries), and gets in once a browser leaves.
-"$bin/plumb-display" --transport "$t" --port 0 --max-browsers 2 > "$work/small.log" 2>&1 &
+"$bin/plumb-display" --transport "$t" --port 0 --foxglove-port 0 --max-browsers 2 > "$work/small.log" 2>&1 &
 pids+=($!)
 wait_for "$work/small.log" "serving http://127.0.0.1:[0-9]+/" 20 || fail "second plumb-display did not start"
 small=$(sed -nE 's|.*serving http://127\.0\.0\.1:([0-9]+)/.*|\1|p' "$work/small.log" | head -1)

@@ -62,7 +62,7 @@ if [ -x "$build/bin/plumb-display" ]; then
   if [ -x "$prefix/bin/plumb-display" ]; then
     # env itself, not the function run(): $! must be the program's pid (env execs it) to stop it below.
     env -u LD_LIBRARY_PATH -u PLUMB_TRANSPORT_PATH -u PLUMB_ESTIMATOR_PATH PATH="$prefix/bin:/usr/bin:/bin" \
-      plumb-display --transport "$host_t" --port 0 --duration 20 > "$work/display.log" 2>&1 &
+      plumb-display --transport "$host_t" --port 0 --foxglove-port 0 --duration 20 > "$work/display.log" 2>&1 &
     display=$!
     pids+=($display)
     for ((i = 0; i < 100; ++i)); do grep -q "serving http" "$work/display.log" && break; sleep 0.1; done

@@ -105,7 +105,7 @@ PY
 
 # The display, joining after the survey: the nearest offset of the newest station (transient-local).
 if [ -x "$bin/plumb-display" ]; then
-  "$bin/plumb-display" --transport "$echo_t" --port 0 > "$work/display.log" 2>&1 &
+  "$bin/plumb-display" --transport "$echo_t" --port 0 --no-foxglove > "$work/display.log" 2>&1 &
   pids+=($!)
   wait_for "$work/display.log" "serving http://127.0.0.1:[0-9]+/" 20 || { fail "plumb-display did not start"; finish; }
   port=$(sed -nE 's|.*serving http://127\.0\.0\.1:([0-9]+)/.*|\1|p' "$work/display.log" | head -1)
