@@ -123,15 +123,16 @@ void Navigator::navigate(const Input& in, const StillnessState& still, std::vect
     const Eigen::Matrix3d c_bn = filter_.mechanization().tool_to_nav();
     faults_.bridge(*prev_, in, dt_nominal, c_bn);
     // Through the gap in steps of the nominal interval, on readings made up (stream_faults.hpp).
-    const std::vector<Input> made_up = faults_.gap_readings(from, at, c_bn, dt_nominal);
+    const std::vector<Input> made_up = StreamFaults::gap_readings(
+        from, at, c_bn, dt_nominal, Eigen::Vector3d(0.0, 0.0, -filter_.gravity()), filter_.accel_bias());
     for (std::size_t k = 1; k < made_up.size(); ++k)
       filter_.step(made_up[k - 1], made_up[k], nullptr, config_.samples_are_means, dt_nominal);
   } else {
     filter_.step(from, at, from2 ? &*from2 : nullptr, config_.samples_are_means, checks_.dt_nominal());
   }
+  faults_.observe(in, step_dt, dt_nominal);
   // At this reading's attitude: the filter's state is the last full update's, degrees behind a
   // turning tool.
-  faults_.observe(in, step_dt, dt_nominal, filter_.mechanization().tool_to_nav(in.f));
   if (in.clipped != 0) ranges_.integrate(in, step_dt, filter_.mechanization().tool_to_nav());
   if (in.depth) {
     stops_.take_depth(in.t, *in.depth, prev_->depth.has_value(), filter_);

@@ -13,21 +13,10 @@ namespace {
 // The spread's memory: long enough to hold a few seconds of drilling, short enough to follow a
 // change from still to turning.
 constexpr double kSpreadMemoryS = 2.0;
-// The force's mean before a gap, in the navigation frame (a turning tool's gravity does not smear
-// there): the readings' vibration left in it falls as sqrt(interval / (2 memory)), 0.03 m/s^2 for
-// 1 m/s^2 at 100 Hz, and a string's acceleration over a few seconds is far smaller (a slide that
-// starts: 0.05 m/s in 5 s). Longer is not better where the attitude before the gap is off (a
-// swinging spin's gaps): the mean then holds readings turned by the wrong attitude. With 1.5 gaps a
-// minute the plumb family's end position: 1.35 % of MD with 2 s, 0.97 % with 6 s, 0.84 % with 20 s;
-// an outside stick-slip run's 0.8 % with 4 s, 3.4 % with 6 s, 9.7 % with 10 s.
-constexpr double kForceMemoryS = 6.0;
-
 }  // namespace
 
 void StreamFaults::reset() {
   recent_ = 0;
-  f_mean_count_ = 0;
-  f_mean_n_.setZero();
   spread_w2_ = spread_f2_ = 0;
   pending_att_ = pending_vel_ = 0;
   pending_turn_.setZero();
@@ -39,7 +28,7 @@ void StreamFaults::reset() {
 // A white sequence x has var(x[k] - 2 x[k-1] + x[k-2]) = 6 var(x), and a trend that is locally a
 // line or a slow curve drops out: what is left is how far a reading strays from what its
 // neighbours say, which is what a lost reading's interpolation misses.
-void StreamFaults::observe(const InputReading& in, double dt, double dt_nominal, const Eigen::Vector3d& f_n) {
+void StreamFaults::observe(const InputReading& in, double dt, double dt_nominal) {
   const bool even = dt_nominal > 0 && std::abs(dt - dt_nominal) < 0.25 * dt_nominal;
   if (!even) recent_ = 0;
   if (recent_ >= 2 && std::abs((r1_.t - r0_.t) - dt) < 0.25 * dt_nominal) {
@@ -47,11 +36,6 @@ void StreamFaults::observe(const InputReading& in, double dt, double dt_nominal,
     spread_w2_ += a * ((in.w - 2.0 * r1_.w + r0_.w).squaredNorm() / 18.0 - spread_w2_);
     spread_f2_ += a * ((in.f - 2.0 * r1_.f + r0_.f).squaredNorm() / 18.0 - spread_f2_);
   }
-  // Each reading weighs as one, a reading after a gap too; until the memory is full, the plain mean
-  // of the readings so far.
-  ++f_mean_count_;
-  const double step = dt_nominal > 0 ? std::min(dt, dt_nominal) : dt;
-  f_mean_n_ += std::max(std::min(1.0, step / kForceMemoryS), 1.0 / static_cast<double>(f_mean_count_)) * (f_n - f_mean_n_);
   r0_ = r1_;
   r1_ = Recent{in.t, in.w, in.f};
   recent_ = std::min(recent_ + 1, 2);
@@ -78,18 +62,16 @@ void StreamFaults::bridge(const InputReading& prev, const InputReading& in, doub
   constexpr double kHalfOverRoot3 = 0.28867513459481287;  // 1 / (2 sqrt(3))
   const Eigen::Vector3d dtheta = (kHalfOverRoot3 * dt) * (c_bn * (in.w - prev.w));
   pending_turn_.head<3>() += dtheta;
-  // The held mean's own vibration (an exponential mean of white readings: variance dt / (2 tau) of
-  // theirs), through the whole gap.
-  pending_force_.diagonal().array() += spread_f2_ * (dt_nominal / (2.0 * kForceMemoryS)) * dt * dt;
   pending_force_.diagonal().array() += spread_f2_ * dt_nominal * missing_s;
   recent_ = 0;
 }
 
 std::vector<InputReading> StreamFaults::gap_readings(const InputReading& prev, const InputReading& in,
-                                                    const Eigen::Matrix3d& c_bn, double dt_nominal) const {
+                                                    const Eigen::Matrix3d& c_bn, double dt_nominal,
+                                                    const Eigen::Vector3d& f_n, const Eigen::Vector3d& accel_bias) {
   const double span = in.t - prev.t;
   const auto steps = static_cast<std::size_t>(std::max(1.0, std::round(span / (dt_nominal > 0 ? dt_nominal : span))));
-  const Eigen::Vector3d f_start = c_bn.transpose() * f_mean_n_;
+  const Eigen::Vector3d f_start = c_bn.transpose() * f_n;
   std::vector<InputReading> readings(steps + 1, prev);
   readings.back() = in;
   Eigen::Quaterniond turned = Eigen::Quaterniond::Identity();  // the tool's frame now, in the frame before the gap
@@ -104,7 +86,7 @@ std::vector<InputReading> StreamFaults::gap_readings(const InputReading& prev, c
       if (angle > 0) turned = (turned * Eigen::Quaterniond(Eigen::AngleAxisd(angle, turn / angle))).normalized();
     }
     // A vector fixed in the navigation frame, seen from a frame turned by `turned`, is turned back.
-    r.f = turned.conjugate() * f_start;
+    r.f = turned.conjugate() * f_start + accel_bias;
   }
   return readings;
 }

@@ -135,9 +135,6 @@ class Mechanization {
   // The tool frame's attitude at the last reading (tool to navigation frame): between full updates
   // the filter's state holds the last full update's, a few degrees behind a turning tool.
   Eigen::Matrix3d tool_to_nav() const { return c0_ * c_; }
-  // A vector of the tool's frame at the last reading in the navigation frame (two products, not a
-  // matrix's: once per reading).
-  Eigen::Vector3d tool_to_nav(const Eigen::Vector3d& v) const { return c0_ * (c_ * v); }
   // The earth rate in the tool frame at the last reading, C_n^b w_ie (what a still gyro reads).
   Eigen::Vector3d earth_rate_in_tool() const { return c_.transpose().lazyProduct(w_b0_); }
   const Eigen::Vector3d& earth_rate() const { return w_ie_; }

@@ -5,7 +5,6 @@
 // it was bridged.
 #pragma once
 
-#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -20,10 +19,9 @@ namespace plumb::strapdown {
 class StreamFaults {
  public:
   void reset();
-  // Every navigable reading, dt after the one before, with its specific force in the navigation
-  // frame (f_n): the spread of the readings about their own local trend, from second differences
-  // over evenly spaced readings, and the specific force's recent mean in the navigation frame.
-  void observe(const InputReading& in, double dt, double dt_nominal, const Eigen::Vector3d& f_n);
+  // Every navigable reading, dt after the one before: the spread of the readings about their own
+  // local trend, from second differences over evenly spaced readings.
+  void observe(const InputReading& in, double dt, double dt_nominal);
   // A gap of dt (the step that ends at t) where dt_nominal was due, as the input checks see it:
   // counted, and said once.
   void lost(double t, double dt, double dt_nominal, Counters& counters);
@@ -39,15 +37,17 @@ class StreamFaults {
   std::vector<std::string> take_notices();
   // The readings a drilling tool's mechanization steps through across a gap, from `prev` (the
   // reading before it, its attitude c_bn) to `in`: one per nominal interval, the rate on its line
-  // between the two, the specific force the recent mean held in the navigation frame (gravity's
-  // reaction and the string's small accelerations) and seen from the attitude the rates turn the
-  // tool to. Not one step: through a turn of hundreds of degrees (a second at 30 rpm) a step
-  // integrates the force as if the turn were small (one 1.3 s gap put the position 0.78 m off). Not
-  // the readings either side: one reading holds the bit's vibration (1 m/s^2 and more), and a line
-  // to it over seconds is a velocity error of metres per second. The first is prev's instant, the
-  // last in's.
-  std::vector<InputReading> gap_readings(const InputReading& prev, const InputReading& in, const Eigen::Matrix3d& c_bn,
-                                         double dt_nominal) const;
+  // between the two, the specific force f_n held in the navigation frame (gravity's reaction: a
+  // string's acceleration over seconds is millimetres per second squared) seen from the attitude
+  // the rates turn the tool to, with the accelerometers' estimated bias. Not one step: through a
+  // turn of hundreds of degrees (a second at 30 rpm) a step integrates the force as if the turn were
+  // small. Not the readings either side: one reading holds the bit's vibration (1-2 m/s^2), and a
+  // line to it over seconds is a velocity error of metres per second; nor their mean: 2 m/s^2 of
+  // vibration leaves 0.07 m/s^2 in a 6 s mean, 0.13 m over a 2 s gap. The first is prev's instant,
+  // the last in's.
+  static std::vector<InputReading> gap_readings(const InputReading& prev, const InputReading& in,
+                                                const Eigen::Matrix3d& c_bn, double dt_nominal,
+                                                const Eigen::Vector3d& f_n, const Eigen::Vector3d& accel_bias);
 
  private:
   struct Recent {
@@ -57,8 +57,6 @@ class StreamFaults {
   Recent r0_, r1_;
   int recent_ = 0;
   double spread_w2_ = 0, spread_f2_ = 0;
-  Eigen::Vector3d f_mean_n_ = Eigen::Vector3d::Zero();  // the recent mean force, navigation frame
-  std::uint64_t f_mean_count_ = 0;
   double pending_att_ = 0, pending_vel_ = 0;  // variance per axis to add at the next epoch
   Eigen::Matrix<double, 6, 1> pending_turn_ = Eigen::Matrix<double, 6, 1>::Zero();
   Eigen::Matrix3d pending_force_ = Eigen::Matrix3d::Zero();
