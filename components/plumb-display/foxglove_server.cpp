@@ -6,7 +6,7 @@
 #include <thread>
 #include <vector>
 
-#include "addresses.hpp"
+#include "civetweb_start.hpp"
 
 namespace plumb::display_component {
 
@@ -26,7 +26,6 @@ int foxglove_data_trampoline(mg_connection* conn, int bits, char* data, size_t s
 }
 void foxglove_close_trampoline(const mg_connection* conn, void* self) { static_cast<FoxgloveServer*>(self)->client_closed(conn); }
 // civetweb's own log lines would interleave with ours: plumb/status counts what matters.
-int foxglove_quiet_log(const mg_connection*, const char*) { return 1; }
 // A plain HTTP request on the Foxglove port: say what the port is for.
 int foxglove_http_trampoline(mg_connection* conn, void*) {
   const std::string body = "plumb-display: Foxglove WebSocket server (subprotocol foxglove.websocket.v1); "
@@ -39,39 +38,14 @@ int foxglove_http_trampoline(mg_connection* conn, void*) {
 }  // namespace
 
 FoxgloveServer::FoxgloveServer(const FoxgloveServerOptions& options, FoxgloveHub& hub) : options_(options), hub_(hub) {
-  mg_init_library(0);
   subprotocols_ = std::make_unique<mg_websocket_subprotocols>();
   subprotocols_->nb_subprotocols = 1;
   subprotocols_->subprotocols = subprotocol_names_;
-  const std::string ports = options_.bind + ":" + std::to_string(options_.port);
-  const std::string threads = std::to_string(options_.max_clients + 2);  // + plain HTTP requests
-  const char* config[] = {"listening_ports", ports.c_str(),
-                          "num_threads", threads.c_str(),
-                          "enable_websocket_ping_pong", "yes",
-                          "websocket_timeout_ms", "5000",
-                          "request_timeout_ms", "10000",
-                          nullptr};
-  mg_callbacks callbacks{};
-  callbacks.log_message = foxglove_quiet_log;
-  mg_init_data init{};
-  init.callbacks = &callbacks;
-  init.user_data = this;
-  init.configuration_options = config;
-  char text[256] = {};
-  unsigned code = 0;
-  mg_error_data error{};
-  error.code = &code;
-  error.text = text;
-  error.text_buffer_size = sizeof text;
-  context_ = mg_start2(&init, &error);
-  if (!context_) {
-    mg_exit_library();
-    std::string why = listen_failure(options_.bind, options_.port, "--foxglove-port");
-    if (why.empty()) why = text[0] ? text : "civetweb could not start";
-    throw std::runtime_error("cannot serve Foxglove on " + ports + ": " + why);
-  }
-  mg_server_port served[4]{};
-  if (mg_get_server_ports(context_, 4, served) > 0) port_ = served[0].port;
+  // A thread per client, and two for plain HTTP requests.
+  const CivetwebServer server =
+      start_civetweb({options_.bind, options_.port, options_.max_clients + 2, "--foxglove-port", "Foxglove"}, this);
+  context_ = server.context;
+  port_ = server.port;
   mg_set_request_handler(context_, "/", foxglove_http_trampoline, this);
   mg_set_websocket_handler_with_subprotocols(context_, "/", subprotocols_.get(), foxglove_connect_trampoline,
                                              foxglove_ready_trampoline, foxglove_data_trampoline,

@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-#include "addresses.hpp"
+#include "civetweb_start.hpp"
 #include "json.hpp"
 #include "web_assets.hpp"
 
@@ -51,41 +51,14 @@ int data_trampoline(mg_connection*, int, char*, size_t, void*) { return 1; }
 void close_trampoline(const mg_connection* conn, void* self) { static_cast<WebServer*>(self)->browser_closed(conn); }
 // civetweb's own log lines (a browser that vanished mid-request, ...) would interleave with ours on
 // stderr: the counters of /stats.json and plumb/status say what matters.
-int quiet_log(const mg_connection*, const char*) { return 1; }
 
 }  // namespace
 
 WebServer::WebServer(const WebOptions& options, Hub& hub) : options_(options), hub_(hub) {
-  mg_init_library(0);
-  const std::string ports = options_.bind + ":" + std::to_string(options_.port);
-  const std::string threads = std::to_string(options_.max_browsers + 8);  // + page and stats requests
-  const char* config[] = {"listening_ports", ports.c_str(),
-                          "num_threads", threads.c_str(),
-                          // A page that stops answering is found by pings when it sends nothing for 5 s.
-                          "enable_websocket_ping_pong", "yes",
-                          "websocket_timeout_ms", "5000",
-                          "request_timeout_ms", "10000",
-                          nullptr};
-  mg_callbacks callbacks{};
-  callbacks.log_message = quiet_log;
-  mg_init_data init{};
-  init.callbacks = &callbacks;
-  init.user_data = this;
-  init.configuration_options = config;
-  char text[256] = {};
-  unsigned code = 0;
-  mg_error_data error{};
-  error.code = &code;
-  error.text = text;
-  error.text_buffer_size = sizeof text;
-  context_ = mg_start2(&init, &error);
-  if (!context_) {
-    std::string why = listen_failure(options_.bind, options_.port, "--port");
-    if (why.empty()) why = text[0] ? text : "civetweb could not start";
-    throw std::runtime_error("cannot serve on " + ports + ": " + why);
-  }
-  mg_server_port served[4]{};
-  if (mg_get_server_ports(context_, 4, served) > 0) port_ = served[0].port;
+  // A thread per browser, and eight for the page's and the stats' requests.
+  const CivetwebServer server = start_civetweb({options_.bind, options_.port, options_.max_browsers + 8, "--port", ""}, this);
+  context_ = server.context;
+  port_ = server.port;
   mg_set_request_handler(context_, "/", serve_trampoline, this);
   mg_set_websocket_handler(context_, "/ws", connect_trampoline, ready_trampoline, data_trampoline, close_trampoline, this);
 }
