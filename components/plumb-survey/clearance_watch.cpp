@@ -1,26 +1,21 @@
 #include "clearance_watch.hpp"
 
-#include <cstdio>
 #include <stdexcept>
 #include <utility>
 
 namespace plumb::survey_component {
 namespace {
 
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
+using components::clearance_number;
 
 std::string describe(const ClearanceWatch::Pair& p, const survey::ClearanceLevels& levels) {
   const auto& c = p.clearance;
-  std::string line = "clearance " + survey::to_string(p.level) + " at MD " + fixed(c.reference.md_m, 2) + " m: SF " +
-                     fixed(c.separation_factor, 2) + " against " + p.offset + " (its MD " + fixed(c.offset.md_m, 1) +
-                     " m, " + fixed(c.centre_to_centre_m, 2) + " m centre to centre, ellipse separation " +
-                     fixed(c.ellipse_separation_m, 2) + " m)";
-  if (p.level == survey::ClearanceLevel::Warning) line += "; warning below SF " + fixed(levels.warning_sf, 2);
-  if (p.level == survey::ClearanceLevel::Alarm) line += "; alarm below SF " + fixed(levels.alarm_sf, 2);
+  std::string line = "clearance " + survey::to_string(p.level) + " at MD " + clearance_number(c.reference.md_m, 2) + " m: SF " +
+                     clearance_number(c.separation_factor, 2) + " against " + p.offset + " (its MD " + clearance_number(c.offset.md_m, 1) +
+                     " m, " + clearance_number(c.centre_to_centre_m, 2) + " m centre to centre, ellipse separation " +
+                     clearance_number(c.ellipse_separation_m, 2) + " m)";
+  if (p.level == survey::ClearanceLevel::Warning) line += "; warning below SF " + clearance_number(levels.warning_sf, 2);
+  if (p.level == survey::ClearanceLevel::Alarm) line += "; alarm below SF " + clearance_number(levels.alarm_sf, 2);
   return line;
 }
 
@@ -40,17 +35,17 @@ ClearanceWatch::ClearanceWatch(const components::ClearanceCliOptions& options, c
     note_("offset well " + w.well.name + ": " + std::to_string(w.well.stations.size()) + " station(s) from " + path +
           ", error model " + w.error_model);
   }
-  note_("clearance by the ISCWSA separation rule (k " + fixed(options_.rule.k, 2) + ", sigma_pa " +
-        fixed(options_.rule.sigma_pa_m, 2) + " m, S_m " + fixed(options_.rule.surface_margin_m, 2) + " m): warning below SF " +
-        fixed(options_.levels.warning_sf, 2) + ", alarm below " + fixed(options_.levels.alarm_sf, 2) + ", on " +
+  note_("clearance by the ISCWSA separation rule (k " + clearance_number(options_.rule.k, 2) + ", sigma_pa " +
+        clearance_number(options_.rule.sigma_pa_m, 2) + " m, S_m " + clearance_number(options_.rule.surface_margin_m, 2) + " m): warning below SF " +
+        clearance_number(options_.levels.warning_sf, 2) + ", alarm below " + clearance_number(options_.levels.alarm_sf, 2) + ", on " +
         "plumb/clearance and plumb/status");
 }
 
-std::vector<ClearanceWatch::Pair> ClearanceWatch::at_station(const std::vector<survey::SurveyRow>& rows) {
+std::vector<ClearanceWatch::Pair> ClearanceWatch::at_station(const survey::SurveyRow& row) {
   std::vector<Pair> pairs;
-  if (offsets_.empty() || rows.empty()) return pairs;
+  if (offsets_.empty()) return pairs;
   // The newest station's covariance is the survey's there: later stations do not change it.
-  const survey::WellPoint station = survey::well_points({rows.back()}).front();
+  const survey::WellPoint station = survey::well_point(row);
   const Pair* worst = nullptr;
   pairs.reserve(offsets_.size());
   for (const auto& offset : offsets_) {

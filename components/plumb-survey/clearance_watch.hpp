@@ -29,8 +29,8 @@ class ClearanceWatch {
                  survey::AzimuthReference survey_reference, std::function<void(const std::string&)> note);
 
   bool active() const { return !offsets_.empty(); }
-  // The survey's newest station (rows.back()) against every offset well.
-  std::vector<Pair> at_station(const std::vector<survey::SurveyRow>& rows);
+  // The survey's newest station against every offset well.
+  std::vector<Pair> at_station(const survey::SurveyRow& row);
 
   survey::ClearanceLevel level() const { return level_; }
   const survey::ClearanceLevels& levels() const { return options_.levels; }

@@ -127,12 +127,10 @@ class LiveSurvey {
   // Stations the file already holds are published again: this writer is new, and late joiners get
   // the whole survey from it. The detector goes on after the last of them.
   void republish_resumed() {
-    std::vector<survey::SurveyRow> so_far;
     for (const auto& row : result_.rows()) {
       writer_.write(to_topic(row));
       if (!o_.quiet) print_row(row, "resumed station");
-      so_far.push_back(row);
-      publish_clearance(so_far);
+      publish_clearance(row);
     }
     if (!result_.rows().empty()) {
       const auto& last = result_.rows().back().station;
@@ -161,7 +159,7 @@ class LiveSurvey {
       writer_.write(to_topic(row));
       if (!o_.quiet) print_row(row, "station");
       const auto level = clearance_.level();
-      publish_clearance(result_.rows());
+      publish_clearance(row);
       // A new level is on plumb/status at once, not at the next period.
       if (clearance_.level() != level) status_.publish(state(), all_counters(), status_message());
     } catch (const survey::StationError& e) {
@@ -173,10 +171,9 @@ class LiveSurvey {
   }
 
   // Every offset well against the survey's newest station, on plumb/clearance.
-  void publish_clearance(const std::vector<survey::SurveyRow>& rows) {
+  void publish_clearance(const survey::SurveyRow& row) {
     if (!clearance_writer_) return;
-    for (const auto& pair : clearance_.at_station(rows))
-      clearance_writer_->write(to_topic(pair, rows.back(), clearance_.levels()));
+    for (const auto& pair : clearance_.at_station(row)) clearance_writer_->write(to_topic(pair, row, clearance_.levels()));
   }
 
   // Degraded: stations refused, or the newest station at the clearance alarm.

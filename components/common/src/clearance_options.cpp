@@ -1,5 +1,6 @@
 #include "plumb/components/clearance_options.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
@@ -25,6 +26,12 @@ void check_clearance_options(const ClearanceCliOptions& o) {
   survey::check_rule(o.rule);
   survey::check_levels(o.levels);
   if (!(o.reference_radius_m >= 0 && o.offset_radius_m >= 0)) throw std::invalid_argument("hole radii must be >= 0");
+}
+
+std::string clearance_number(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
 }
 
 std::string clearance_well_name(const std::string& path) {

@@ -32,12 +32,6 @@ struct ClearanceCommandOptions {
   std::string csv, plot;
 };
 
-std::string clearance_fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
-
 std::string clearance_csv_header() {
   return "reference_md_m,reference_north_m,reference_east_m,reference_tvd_m,offset,offset_md_m,offset_north_m,"
          "offset_east_m,offset_tvd_m,centre_to_centre_m,horizontal_bearing_deg,high_side_bearing_deg,"
@@ -97,11 +91,11 @@ int run_clearance(ClearanceCommandOptions o) {
     alarms += level == survey::ClearanceLevel::Alarm;
     if (worst.separation_factor < min_sf) {
       min_sf = worst.separation_factor;
-      min_where = worst_name + " at reference MD " + clearance_fixed(station.md_m, 2) + " m";
+      min_where = worst_name + " at reference MD " + components::clearance_number(station.md_m, 2) + " m";
     }
-    std::cout << clearance_fixed(station.md_m, 2) << "  " << worst_name << "  " << clearance_fixed(worst.offset.md_m, 2)
-              << "  " << clearance_fixed(worst.centre_to_centre_m, 3) << "  "
-              << clearance_fixed(worst.ellipse_separation_m, 3) << "  " << clearance_fixed(worst.separation_factor, 3)
+    std::cout << components::clearance_number(station.md_m, 2) << "  " << worst_name << "  " << components::clearance_number(worst.offset.md_m, 2)
+              << "  " << components::clearance_number(worst.centre_to_centre_m, 3) << "  "
+              << components::clearance_number(worst.ellipse_separation_m, 3) << "  " << components::clearance_number(worst.separation_factor, 3)
               << "  " << survey::to_string(level) << '\n';
   }
   if (!o.csv.empty()) survey::write_file_atomically(o.csv, table);
@@ -113,7 +107,7 @@ int run_clearance(ClearanceCommandOptions o) {
     if (o.csv.empty()) std::filesystem::remove(csv);
   }
   std::cerr << "plumb clearance: " << reference.well.stations.size() << " reference station(s) against "
-            << offsets.size() << " offset well(s): smallest SF " << clearance_fixed(min_sf, 3) << " (" << min_where
+            << offsets.size() << " offset well(s): smallest SF " << components::clearance_number(min_sf, 3) << " (" << min_where
             << "); " << warnings << " station(s) at warning, " << alarms << " at alarm\n";
   return 0;
 }

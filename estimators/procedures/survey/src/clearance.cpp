@@ -85,12 +85,15 @@ std::vector<StationClearance> clearance(const ClearanceWell& reference, const Cl
   return out;
 }
 
+WellPoint well_point(const SurveyRow& r) {
+  return {r.station.md_m, r.station.inclination_deg, r.azimuth_deg,
+          Eigen::Vector3d(r.point.north_m, r.point.east_m, r.point.tvd_m), r.uncertainty.covariance};
+}
+
 std::vector<WellPoint> well_points(const std::vector<SurveyRow>& rows) {
   std::vector<WellPoint> out;
   out.reserve(rows.size());
-  for (const SurveyRow& r : rows)
-    out.push_back({r.station.md_m, r.station.inclination_deg, r.azimuth_deg,
-                   Eigen::Vector3d(r.point.north_m, r.point.east_m, r.point.tvd_m), r.uncertainty.covariance});
+  for (const SurveyRow& r : rows) out.push_back(well_point(r));
   return out;
 }
 

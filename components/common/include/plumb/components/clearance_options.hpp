@@ -29,4 +29,7 @@ void check_clearance_options(const ClearanceCliOptions& o);
 // A well's name: its file's name without the folder and the extensions (.wellpath.csv, .csv).
 std::string clearance_well_name(const std::string& path);
 
+// A number as the clearance lines print it: `decimals` places, fixed.
+std::string clearance_number(double v, int decimals);
+
 }  // namespace plumb::components

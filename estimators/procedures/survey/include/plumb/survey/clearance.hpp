@@ -77,7 +77,9 @@ StationClearance station_clearance(const WellPoint& reference, double reference_
 std::vector<StationClearance> clearance(const ClearanceWell& reference, const ClearanceWell& offset,
                                         const SeparationRule& rule);
 
-// A survey's rows as a clearance well's stations (the position covariance of every term).
+// A survey's row, or all its rows, as a clearance well's stations (the position covariance of every
+// term).
+WellPoint well_point(const SurveyRow& row);
 std::vector<WellPoint> well_points(const std::vector<SurveyRow>& rows);
 
 // A survey as a clearance well: its stations, and between them its error model at the point
