@@ -152,6 +152,18 @@ void Mechanization::step(const ImuReading& a, const ImuReading& b, const ImuRead
   stepped_ = true;
 }
 
+void Mechanization::turn_about_axis(double angle) {
+  if (!stepped_ || angle == 0) return;
+  const Eigen::Matrix3d before = c_;
+  b_ = (b_ * Eigen::Quaterniond(Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()))).normalized();
+  c_ = b_.toRotationMatrix();
+  // The next step's values at its first reading: the same reading seen from the turned attitude.
+  const Eigen::Matrix3d change = c_ * before.transpose();
+  last_f_ = change * last_f_;
+  last_lever_ = change * last_lever_;
+  last_gyro_g_ = tool_gyro_g(c_, last_raw_f_, c_.lazyProduct(last_raw_f_));
+}
+
 NavState Mechanization::state() const {
   NavState x = start_;
   if (!stepped_) return x;

@@ -37,6 +37,7 @@ void Navigator::reset() {
   unseen_.reset(config_);
   faults_.reset();
   ranges_.reset(config_);
+  spin_.reset(config_);
   temperature_.reset(config_);
 }
 
@@ -104,11 +105,19 @@ void Navigator::process(const Input& in, std::vector<Estimate>& out) {
   while (const std::optional<StillnessLag::Entry> ready = lag_.pop_ready()) navigate(ready->reading, ready->still, out);
 }
 
-void Navigator::navigate(const Input& in, const StillnessState& still, std::vector<Estimate>& out) {
+void Navigator::navigate(Input in, const StillnessState& still, std::vector<Estimate>& out) {
   rows_.add_reading(in);
   // Samples lost before this one: the step bridges them, and the epoch's noise says what they cost.
   const double step_dt = in.t - prev_->t, dt_nominal = checks_.dt_nominal();
   const bool gap = checks_.lost_samples(step_dt);
+  // An axial gyro at its range: the spin from the accelerometers stands in for its rate.
+  std::optional<ClippedSpin::Spin> spin;
+  if (filter_.drilling_tool() && ((in.clipped & kAxialGyroClipped) != 0 || in.gyro_bad) && !gap) {
+    spin = spin_.through(in, *prev_, step_dt, filter_.mechanization().tool_to_nav(), filter_.gravity());
+    if (spin) in.w.z() = spin->rate;
+  } else {
+    spin_.read();
+  }
   if (gap) rows_.note_gap(in.t);
   // The mechanization steps between the readings' instants; everything else keeps their stamps.
   const double prev_instant = clock_.instant();
@@ -129,11 +138,12 @@ void Navigator::navigate(const Input& in, const StillnessState& still, std::vect
       filter_.step(made_up[k - 1], made_up[k], nullptr, config_.samples_are_means, dt_nominal);
   } else {
     filter_.step(from, at, from2 ? &*from2 : nullptr, config_.samples_are_means, checks_.dt_nominal());
+    if (spin) filter_.turn_about_axis(spin->turn);
   }
   faults_.observe(in, step_dt, dt_nominal);
   // At this reading's attitude: the filter's state is the last full update's, degrees behind a
   // turning tool.
-  if (in.clipped != 0) ranges_.integrate(in, step_dt, filter_.mechanization().tool_to_nav());
+  if (in.clipped != 0 || spin) ranges_.integrate(in, step_dt, filter_.mechanization().tool_to_nav(), spin ? spin_.source_name() : nullptr);
   if (in.depth) {
     stops_.take_depth(in.t, *in.depth, prev_->depth.has_value(), filter_);
     unseen_.note_depth(in.t);
@@ -143,14 +153,14 @@ void Navigator::navigate(const Input& in, const StillnessState& still, std::vect
   const double kf_dt = 1.0 / config_.kf_rate_hz;
   const bool due = in.t - last_epoch_t_ >= kf_dt - 0.5 * checks_.dt_nominal();
   if (due || rows_.output_due(in.t) || still_state_.started || still_state_.ended) epoch(in, out);
-  // A saturated (held) rate or a gap breaks the parabola: start again from a line.
-  if (in.gyro_bad || (prev_ && in.t - prev_->t > config_.max_gap_s)) {
+  // A saturated (held) or followed rate or a gap breaks the parabola: start again from a line.
+  if (in.gyro_bad || spin || (prev_ && in.t - prev_->t > config_.max_gap_s)) {
     prev2_.reset();
   } else {
     prev2_ = prev_;
     prev2_instant_ = prev_instant;
   }
-  prev_ = in;
+  prev_ = std::move(in);
 }
 
 void Navigator::before_alignment(const Input& in, std::vector<Estimate>& out) {
@@ -212,6 +222,8 @@ void Navigator::epoch(const Input& in, std::vector<Estimate>& out) {
       unseen_.at_epoch(filter_.state().q.toRotationMatrix().col(2), still_state_, in.t, in.t - last_epoch_t_);
   ranges_.add_to(unseen);
   faults_.add_to(unseen);
+  if (const double spin_variance = spin_.take_variance(); spin_variance > 0)
+    unseen.turn.head<3>() += std::sqrt(spin_variance) * filter_.mechanization().tool_to_nav().col(2);
   const FilterState::Prediction prediction =
       filter_.predict(temperature_.widen(faults_.widen(stops_.process_noise(filter_.noise(), still_state_,
                                                                             filter_.drilling_tool()),

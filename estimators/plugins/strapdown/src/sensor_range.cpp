@@ -38,15 +38,17 @@ void SensorRange::seen(const InputReading& in) {
     notices_.push_back(format("gyro clipped at its range (%.0f deg/s) at t = %.3f s", config_.gyro_range * kRadToDeg,
                               in.t) +
                        ": the turn beyond it is unknown, so each clipped reading widens the attitude's sigma about that "
-                       "axis by up to gyro_rate_max_dps less the range; the rows that hold one say so (counter "
-                       "gyro_clipped)");
+                       "axis by up to gyro_rate_max_dps less the range, except a drilling tool's about its own axis, "
+                       "whose spin is followed from the magnetometers (or the accelerometers) with the sigma that "
+                       "costs; the rows that hold one say so (counter gyro_clipped)");
   }
 }
 
 // A held reading (flagged saturated: the last good value stands in) may miss the whole plausible
 // value, a clipped one only what lies beyond the range.
-void SensorRange::integrate(const InputReading& in, double dt, const Eigen::Matrix3d& c_bn) {
-  if (in.clipped == 0 || !(dt > 0)) return;
+void SensorRange::integrate(const InputReading& in, double dt, const Eigen::Matrix3d& c_bn, const char* spin_followed_by) {
+  const bool spin_followed = spin_followed_by != nullptr;
+  if ((in.clipped == 0 && !spin_followed) || !(dt > 0)) return;
   const auto axes = [](unsigned bits) {
     return Eigen::Vector3d((bits & 1u) ? 1.0 : 0.0, (bits & 2u) ? 1.0 : 0.0, (bits & 4u) ? 1.0 : 0.0);
   };
@@ -55,10 +57,15 @@ void SensorRange::integrate(const InputReading& in, double dt, const Eigen::Matr
     const double beyond = std::max(0.0, config_.accel_shock_max - (in.accel_bad ? 0.0 : config_.accel_range));
     velocity_.noalias() += (kRmsOfUniformExcess * beyond * dt) * (c_bn * axes(in.clipped & 7u));
   }
-  if ((in.clipped & 56u) != 0) {
+  const unsigned gyro_axes = ((in.clipped >> 3) & 7u) & (spin_followed ? 3u : 7u);
+  if (spin_followed) {
+    ++row_followed_;
+    followed_by_ = spin_followed_by;
+  }
+  if (gyro_axes != 0) {
     ++row_gyro_;
     const double beyond = std::max(0.0, config_.gyro_rate_max - (in.gyro_bad ? 0.0 : config_.gyro_range));
-    attitude_.noalias() += (kRmsOfUniformExcess * beyond * dt) * (c_bn * axes((in.clipped >> 3) & 7u));
+    attitude_.noalias() += (kRmsOfUniformExcess * beyond * dt) * (c_bn * axes(gyro_axes));
   }
 }
 
@@ -78,6 +85,12 @@ std::string SensorRange::row_warning() const {
   if (row_gyro_ > 0) {
     out += (out.empty() ? "" : "; ") + format("gyro clipped at %.0f deg/s in %.0f readings: sigma widened",
                                               config_.gyro_range * kRadToDeg, static_cast<double>(row_gyro_));
+  }
+  if (row_followed_ > 0) {
+    out += (out.empty() ? "" : "; ") +
+           format("axial gyro at its range (%.0f deg/s) in %.0f readings: the spin followed from the ",
+                  config_.gyro_range * kRadToDeg, static_cast<double>(row_followed_)) +
+           followed_by_;
   }
   return out;
 }

@@ -39,6 +39,8 @@ class FilterState {
   // corrected once (the same numbers as correcting it again at every step it takes part in).
   void step(const InputReading& prev, const InputReading& in, const InputReading* prev2, bool samples_are_means,
             double dt_nominal);
+  // A turn about the tool axis its readings did not show, after the last step (clipped_spin.hpp).
+  void turn_about_axis(double angle) { mech_.turn_about_axis(angle); }
   // A filter epoch: the mechanization's full update, then the filter's prediction to it with the
   // given process noise. Returns the transition, for the smoother.
   struct Prediction {

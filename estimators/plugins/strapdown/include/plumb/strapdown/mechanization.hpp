@@ -123,6 +123,9 @@ class Mechanization {
   // One minor step from reading a to reading b (b.t > a.t); `before` (optional): the reading
   // before a, for the parabolic rate interpolation (only its time and rate are read).
   void step(const ImuReading& a, const ImuReading& b, const ImuReading* before = nullptr);
+  // A turn about the tool's axis at the last reading that its readings did not show (a clipped
+  // gyro's, clipped_spin.hpp): the axis, and so the velocity and position, stay as they are.
+  void turn_about_axis(double angle);
   // The full update: the state at the last reading, without starting again.
   NavState state() const;
   // The full update, adding the steps since begin() to `integrals`. The caller begins again from the

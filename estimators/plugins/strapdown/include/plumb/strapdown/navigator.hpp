@@ -17,6 +17,7 @@
 #include "plumb/core/estimate.hpp"
 #include "plumb/core/sample.hpp"
 #include "plumb/strapdown/aligner.hpp"
+#include "plumb/strapdown/clipped_spin.hpp"
 #include "plumb/strapdown/error_state_filter.hpp"
 #include "plumb/strapdown/filter_state.hpp"
 #include "plumb/strapdown/input_checks.hpp"
@@ -74,7 +75,7 @@ class Navigator {
   void reset();
   void count(const char* name, std::uint64_t n = 1) { counters_[name] += n; }
   void process(const Input& in, std::vector<Estimate>& out);
-  void navigate(const Input& in, const StillnessState& still, std::vector<Estimate>& out);
+  void navigate(Input in, const StillnessState& still, std::vector<Estimate>& out);
   void before_alignment(const Input& in, std::vector<Estimate>& out);
   void align(const Input& in);
   void epoch(const Input& in, std::vector<Estimate>& out);
@@ -103,6 +104,7 @@ class Navigator {
   UnseenMotion unseen_;
   StreamFaults faults_;
   SensorRange ranges_;
+  ClippedSpin spin_;
   TemperatureDrift temperature_;
 };
 

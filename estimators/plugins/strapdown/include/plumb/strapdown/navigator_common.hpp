@@ -27,6 +27,7 @@ struct InputReading {
   // gyros (a byte: every reading is copied through the lag queue).
   std::uint8_t clipped = 0;
 };
+inline constexpr std::uint8_t kAxialGyroClipped = 32u;  // InputReading::clipped's bit of the gyro about the tool axis
 
 // The reference field (|B|, dip) the detector and the magnetic updates are gated by: given, or
 // learnt at alignment.

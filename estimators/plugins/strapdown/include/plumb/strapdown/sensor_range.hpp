@@ -22,13 +22,14 @@ class SensorRange {
   // Every sample taken, before or after alignment: the notice.
   void seen(const InputReading& in);
   // A reading the filter integrates over dt, the tool frame to NED c_bn: what its clipped axes
-  // could hide, gathered for the epoch.
-  void integrate(const InputReading& in, double dt, const Eigen::Matrix3d& c_bn);
+  // could hide, gathered for the epoch. spin_followed_by: the sensors its axial rate was followed
+  // from (clipped_spin.hpp, which says what that axis could hide), or none.
+  void integrate(const InputReading& in, double dt, const Eigen::Matrix3d& c_bn, const char* spin_followed_by = nullptr);
   // The epoch's extra noise: the gathered attitude and velocity, as u u' along their directions.
   void add_to(UnseenMotionNoise& noise);
   // What the row since the last one says (empty when nothing was clipped); row_done() starts anew.
   std::string row_warning() const;
-  void row_done() { row_accel_ = row_gyro_ = 0; }
+  void row_done() { row_accel_ = row_gyro_ = row_followed_ = 0; }
   std::vector<std::string> take_notices();
 
  private:
@@ -36,7 +37,8 @@ class SensorRange {
   // Summed linearly within an epoch, whatever the side clipped: a slip's samples err the same way,
   // and a shock that rebounds clips both sides by excesses that need not cancel.
   Eigen::Vector3d attitude_ = Eigen::Vector3d::Zero(), velocity_ = Eigen::Vector3d::Zero();
-  std::uint64_t row_accel_ = 0, row_gyro_ = 0;
+  std::uint64_t row_accel_ = 0, row_gyro_ = 0, row_followed_ = 0;
+  const char* followed_by_ = "";
   bool accel_said_ = false, gyro_said_ = false;
   std::vector<std::string> notices_;
 };
