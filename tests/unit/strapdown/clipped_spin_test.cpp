@@ -2,7 +2,7 @@
 // turn across the axis (ClippedSpin): against a tool turned through a known stick-slip, the turn it
 // gives over a slip is the truth's within its own stated sigma, whether it follows the field or,
 // under vibration, gravity; its rate stays beyond the range; near vertical without a field it
-// declines.
+// declines; across a gap, the field on either side measures the turn the gap hid.
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -106,6 +106,30 @@ TEST(ClippedSpin, DeclinesNearVerticalWithoutAField) {
   EXPECT_GT(follow_slip(5, false, 0.1, 0.5).declined, 0);
   // With the field across the axis it still follows.
   EXPECT_EQ(follow_slip(5, true, 0.1, 0.5).declined, 0);
+}
+
+// Across a gap the tool turned 100 deg about its axis where the made-up readings turned it 70: the
+// field across the axis on either side says the 30 left, whatever whole turns the gap held.
+TEST(ClippedSpin, TheFieldAcrossTheAxisMeasuresAGapsTurn) {
+  const Eigen::Matrix3d tilt = (Eigen::AngleAxisd(40 * kDegSpin, Eigen::Vector3d::UnitZ()) *
+                                Eigen::AngleAxisd(70 * kDegSpin, Eigen::Vector3d::UnitY()))
+                                   .toRotationMatrix();
+  const Eigen::Vector3d b_nav(20, 3, 40);
+  const auto about_axis = [&](double deg) -> Eigen::Matrix3d {
+    return tilt * Eigen::AngleAxisd(deg * kDegSpin, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  };
+  for (const double whole_turns : {0.0, 2.0}) {
+    InputReading before, after;
+    before.b = about_axis(15).transpose() * b_nav;
+    after.b = about_axis(15 + 100 + 360 * whole_turns).transpose() * b_nav;
+    const std::optional<double> left = unseen_turn_across_gap(before, after, about_axis(15), about_axis(15 + 70));
+    ASSERT_TRUE(left);
+    EXPECT_NEAR(*left / kDegSpin, 30, 1e-9);
+  }
+  // The field along the axis shows no turn about it.
+  InputReading along;
+  along.b = about_axis(0).transpose() * (tilt.col(2) * 45.0);
+  EXPECT_FALSE(unseen_turn_across_gap(along, along, about_axis(0), about_axis(0)));
 }
 
 }  // namespace

@@ -30,6 +30,7 @@ std::pair<double, double> tracker_gains(double lambda) {
 }
 
 double across_angle(const Eigen::Vector3d& v) { return std::atan2(v.y(), v.x()); }
+bool across_axis(const Eigen::Vector3d& v) { return v.head<2>().norm() >= ClippedSpin::kMinAcrossAxis * v.norm(); }
 
 }  // namespace
 
@@ -45,11 +46,10 @@ std::optional<ClippedSpin::Spin> ClippedSpin::through(const InputReading& in, co
   if (!(dt > 0)) return std::nullopt;
   // The field's part across the axis (far better than gravity's: no vibration in it), where the
   // axis is not along the field; else gravity's, where the axis is not near vertical.
-  const auto across = [](const Eigen::Vector3d& v) { return v.head<2>().norm() >= kMinAcrossAxis * v.norm(); };
-  const bool mag = in.b && prev.b && across(*in.b) && across(*prev.b);
+  const bool mag = in.b && prev.b && across_axis(*in.b) && across_axis(*prev.b);
   // Gravity's reaction (up, -z in NED) seen from the tool at the reading before.
   const Eigen::Vector3d up_in_tool = -g * c_bn.row(2).transpose();
-  if (!mag && !across(up_in_tool)) {
+  if (!mag && !across_axis(up_in_tool)) {
     tracking_ = false;
     return std::nullopt;
   }
@@ -87,6 +87,15 @@ double ClippedSpin::take_variance() {
   const double v = variance_;
   variance_ = 0;
   return v;
+}
+
+std::optional<double> unseen_turn_across_gap(const InputReading& prev, const InputReading& in,
+                                             const Eigen::Matrix3d& c_before, const Eigen::Matrix3d& c_after) {
+  if (!prev.b || !in.b || !across_axis(*prev.b) || !across_axis(*in.b)) return std::nullopt;
+  // The field fixed in the navigation frame, seen after the mechanization's turn: the tool turned
+  // further by a about its axis sees it a further -a across the axis.
+  const Eigen::Vector3d predicted = c_after.transpose() * (c_before * *prev.b);
+  return wrap_pi(across_angle(predicted) - across_angle(*in.b));
 }
 
 }  // namespace plumb::strapdown

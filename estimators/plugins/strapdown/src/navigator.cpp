@@ -136,6 +136,12 @@ void Navigator::navigate(Input in, const StillnessState& still, std::vector<Esti
         from, at, c_bn, dt_nominal, Eigen::Vector3d(0.0, 0.0, -filter_.gravity()), filter_.accel_bias());
     for (std::size_t k = 1; k < made_up.size(); ++k)
       filter_.step(made_up[k - 1], made_up[k], nullptr, config_.samples_are_means, dt_nominal);
+    // The field across the axis says how far the tool turned about it over the gap.
+    if (const std::optional<double> turn =
+            unseen_turn_across_gap(*prev_, in, c_bn, filter_.mechanization().tool_to_nav())) {
+      filter_.turn_about_axis(
+          faults_.axial_turn_seen(filter_.mechanization().tool_to_nav().col(2), *turn, in.b->head<2>().norm()));
+    }
   } else {
     filter_.step(from, at, from2 ? &*from2 : nullptr, config_.samples_are_means, checks_.dt_nominal());
     if (spin) filter_.turn_about_axis(spin->turn);

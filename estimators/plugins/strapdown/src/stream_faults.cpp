@@ -17,7 +17,7 @@ constexpr double kSpreadMemoryS = 2.0;
 
 void StreamFaults::reset() {
   recent_ = 0;
-  spread_w2_ = spread_f2_ = 0;
+  spread_w2_ = spread_f2_ = spread_b2_ = 0;
   pending_att_ = pending_vel_ = 0;
   pending_turn_.setZero();
   pending_force_.setZero();
@@ -35,9 +35,10 @@ void StreamFaults::observe(const InputReading& in, double dt, double dt_nominal)
     const double a = std::min(1.0, dt / kSpreadMemoryS);
     spread_w2_ += a * ((in.w - 2.0 * r1_.w + r0_.w).squaredNorm() / 18.0 - spread_w2_);
     spread_f2_ += a * ((in.f - 2.0 * r1_.f + r0_.f).squaredNorm() / 18.0 - spread_f2_);
+    if (in.b && r1_.b && r0_.b) spread_b2_ += a * ((*in.b - 2.0 * *r1_.b + *r0_.b).squaredNorm() / 18.0 - spread_b2_);
   }
   r0_ = r1_;
-  r1_ = Recent{in.t, in.w, in.f};
+  r1_ = Recent{in.t, in.w, in.f, in.b};
   recent_ = std::min(recent_ + 1, 2);
 }
 
@@ -89,6 +90,21 @@ std::vector<InputReading> StreamFaults::gap_readings(const InputReading& prev, c
     r.f = turned.conjugate() * f_start + accel_bias;
   }
   return readings;
+}
+
+// The field's angle across the axis before and after the gap, each with the magnetometers' noise
+// across it: a measurement of the turn with variance 2 (noise / field across)^2, weighed with the
+// gap's allowance about the axis as a Kalman update of that one angle.
+double StreamFaults::axial_turn_seen(const Eigen::Vector3d& axis_n, double turn, double field_across) {
+  if (!(field_across > 0)) return 0;
+  const double allowed = axis_n.dot(pending_turn_.head<3>());
+  constexpr double kMinFieldNoise2 = 1e-4;  // (0.01 uT)^2: a perfect simulated magnetometer
+  const double measured2 = 2.0 * std::max(spread_b2_, kMinFieldNoise2) / (field_across * field_across);
+  const double allowed2 = allowed * allowed;
+  if (!(allowed2 + measured2 > 0)) return 0;
+  const double gain = allowed2 / (allowed2 + measured2);
+  pending_turn_.head<3>() -= (1.0 - std::sqrt(1.0 - gain)) * allowed * axis_n;
+  return gain * turn;
 }
 
 void StreamFaults::add_to(UnseenMotionNoise& noise) {

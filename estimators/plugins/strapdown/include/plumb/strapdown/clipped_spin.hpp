@@ -54,4 +54,13 @@ class ClippedSpin {
   double variance_ = 0;
 };
 
+// A gap (samples lost) hides the tool's turn about its axis the same way: the made-up readings
+// turn it on the rate's line between the readings either side, which a swinging spin (stick-slip)
+// leaves tens of degrees off. The field's part across the axis before (prev) and after (in) the gap,
+// against where the mechanization's turn across it (c_before to c_after, tool to navigation frame)
+// puts the field, says what is left: the turn to add about the axis, modulo a whole turn (all an
+// attitude needs). None without the field across the axis at both ends.
+std::optional<double> unseen_turn_across_gap(const InputReading& prev, const InputReading& in,
+                                             const Eigen::Matrix3d& c_before, const Eigen::Matrix3d& c_after);
+
 }  // namespace plumb::strapdown

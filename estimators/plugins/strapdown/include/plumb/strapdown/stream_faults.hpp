@@ -5,6 +5,7 @@
 // it was bridged.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,11 @@ class StreamFaults {
   // The same gap as the filter bridges it, from the reading before (prev) to this one (in), the tool
   // frame to NED c_bn: the lost readings' share of the process noise of the epoch that bridges it.
   void bridge(const InputReading& prev, const InputReading& in, double dt_nominal, const Eigen::Matrix3d& c_bn);
+  // The last gap's turn about the tool's axis (axis_n, navigation frame) as the field across the
+  // axis shows it (unseen_turn_across_gap, the field across the axis after the gap `field_across`,
+  // microtesla): the part of it to take, weighed against what the gap may hide about the axis and
+  // the magnetometers' noise; what the gap may hide about the axis shrinks to match.
+  double axial_turn_seen(const Eigen::Vector3d& axis_n, double turn, double field_across);
   // The turn the gaps since the last epoch may hide, for the epoch; forgets it.
   void add_to(UnseenMotionNoise& noise);
   // A sample sent twice at t (dropped by the input checks).
@@ -53,10 +59,11 @@ class StreamFaults {
   struct Recent {
     double t = 0;
     Eigen::Vector3d w, f;
+    std::optional<Eigen::Vector3d> b;
   };
   Recent r0_, r1_;
   int recent_ = 0;
-  double spread_w2_ = 0, spread_f2_ = 0;
+  double spread_w2_ = 0, spread_f2_ = 0, spread_b2_ = 0;
   double pending_att_ = 0, pending_vel_ = 0;  // variance per axis to add at the next epoch
   Eigen::Matrix<double, 6, 1> pending_turn_ = Eigen::Matrix<double, 6, 1>::Zero();
   Eigen::Matrix3d pending_force_ = Eigen::Matrix3d::Zero();
