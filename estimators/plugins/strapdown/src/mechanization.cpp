@@ -164,6 +164,13 @@ void Mechanization::turn_about_axis(double angle) {
   last_gyro_g_ = tool_gyro_g(c_, last_raw_f_, c_.lazyProduct(last_raw_f_));
 }
 
+void Mechanization::shift(const Eigen::Vector3d& dv_n, const Eigen::Vector3d& dp_n) {
+  if (!stepped_) return;
+  u_.noalias() += c0_.transpose() * dv_n;
+  u_sum_.noalias() += c0_.transpose() * dp_n;
+  last_axis_cross_v_ = c_.col(2).cross(v_b0_ + u_ + g_b0_ * tau_);
+}
+
 NavState Mechanization::state() const {
   NavState x = start_;
   if (!stepped_) return x;

@@ -131,11 +131,16 @@ void Navigator::navigate(Input in, const StillnessState& still, std::vector<Esti
   if (gap && filter_.drilling_tool()) {
     const Eigen::Matrix3d c_bn = filter_.mechanization().tool_to_nav();
     faults_.bridge(*prev_, in, dt_nominal, c_bn);
+    // A drilling tool's velocity across its axis is vibration, whose mean over a gap is nothing:
+    // the instant's, held through the gap, would move it by that velocity times the gap.
+    const Eigen::Vector3d v = filter_.mechanization().state().v;
+    const Eigen::Vector3d across = v - c_bn.col(2) * c_bn.col(2).dot(v);
     // Through the gap in steps of the nominal interval, on readings made up (stream_faults.hpp).
     const std::vector<Input> made_up = StreamFaults::gap_readings(
         from, at, c_bn, dt_nominal, Eigen::Vector3d(0.0, 0.0, -filter_.gravity()), filter_.accel_bias());
     for (std::size_t k = 1; k < made_up.size(); ++k)
       filter_.step(made_up[k - 1], made_up[k], nullptr, config_.samples_are_means, dt_nominal);
+    filter_.shift_motion(-across, -across * (at.t - from.t));
     // The field across the axis says how far the tool turned about it over the gap.
     if (const std::optional<double> turn =
             unseen_turn_across_gap(*prev_, in, c_bn, filter_.mechanization().tool_to_nav())) {

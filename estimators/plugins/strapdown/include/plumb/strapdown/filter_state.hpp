@@ -41,6 +41,8 @@ class FilterState {
             double dt_nominal);
   // A turn about the tool axis its readings did not show, after the last step (clipped_spin.hpp).
   void turn_about_axis(double angle) { mech_.turn_about_axis(angle); }
+  // A change of velocity and position since the last step that the readings did not show.
+  void shift_motion(const Eigen::Vector3d& dv_n, const Eigen::Vector3d& dp_n) { mech_.shift(dv_n, dp_n); }
   // A filter epoch: the mechanization's full update, then the filter's prediction to it with the
   // given process noise. Returns the transition, for the smoother.
   struct Prediction {

@@ -126,6 +126,9 @@ class Mechanization {
   // A turn about the tool's axis at the last reading that its readings did not show (a clipped
   // gyro's, clipped_spin.hpp): the axis, and so the velocity and position, stay as they are.
   void turn_about_axis(double angle);
+  // A change of velocity and position at the last reading that its readings did not show (a gap's
+  // velocity across a drilling tool's axis, which is vibration: navigator.cpp), navigation frame.
+  void shift(const Eigen::Vector3d& dv_n, const Eigen::Vector3d& dp_n);
   // The full update: the state at the last reading, without starting again.
   NavState state() const;
   // The full update, adding the steps since begin() to `integrals`. The caller begins again from the
