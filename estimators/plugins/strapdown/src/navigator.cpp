@@ -38,6 +38,7 @@ void Navigator::reset() {
   faults_.reset();
   ranges_.reset(config_);
   spin_.reset(config_);
+  shocks_.reset();
   temperature_.reset(config_);
 }
 
@@ -148,8 +149,14 @@ void Navigator::navigate(Input in, const StillnessState& still, std::vector<Esti
           faults_.axial_turn_seen(filter_.mechanization().tool_to_nav().col(2), *turn, in.b->head<2>().norm()));
     }
   } else {
+    if (filter_.drilling_tool() && shocks_.starts(in)) shocks_.start(filter_.mechanization().state());
     filter_.step(from, at, from2 ? &*from2 : nullptr, config_.samples_are_means, checks_.dt_nominal());
     if (spin) filter_.turn_about_axis(spin->turn);
+    if (shocks_.ends(in)) {
+      const Eigen::Matrix3d c_bn = filter_.mechanization().tool_to_nav();
+      const ShockRebound::Shift back = shocks_.end(filter_.mechanization().state(), c_bn.col(2));
+      filter_.shift_motion(back.dv, back.dp);
+    }
   }
   faults_.observe(in, step_dt, dt_nominal);
   // At this reading's attitude: the filter's state is the last full update's, degrees behind a
@@ -163,7 +170,10 @@ void Navigator::navigate(Input in, const StillnessState& still, std::vector<Esti
   stops_.follow(in, still_state_, counters_);
   const double kf_dt = 1.0 / config_.kf_rate_hz;
   const bool due = in.t - last_epoch_t_ >= kf_dt - 0.5 * checks_.dt_nominal();
-  if (due || rows_.output_due(in.t) || still_state_.started || still_state_.ended) epoch(in, out);
+  // Not inside a clipped shock: its velocity is taken back at its end (shock_rebound.hpp), and the
+  // lateral-velocity updates would read it as attitude meanwhile.
+  const bool in_shock = shocks_.open();
+  if (((due || rows_.output_due(in.t)) && !in_shock) || still_state_.started || still_state_.ended) epoch(in, out);
   // A saturated (held) or followed rate or a gap breaks the parabola: start again from a line.
   if (in.gyro_bad || spin || (prev_ && in.t - prev_->t > config_.max_gap_s)) {
     prev2_.reset();

@@ -30,6 +30,7 @@
 #include "plumb/strapdown/stillness_lag.hpp"
 #include "plumb/strapdown/stillness_watch.hpp"
 #include "plumb/strapdown/sensor_range.hpp"
+#include "plumb/strapdown/shock_rebound.hpp"
 #include "plumb/strapdown/stop_updates.hpp"
 #include "plumb/strapdown/stream_faults.hpp"
 #include "plumb/strapdown/temperature_drift.hpp"
@@ -105,6 +106,7 @@ class Navigator {
   StreamFaults faults_;
   SensorRange ranges_;
   ClippedSpin spin_;
+  ShockRebound shocks_;
   TemperatureDrift temperature_;
 };
 
