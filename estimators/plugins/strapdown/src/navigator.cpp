@@ -111,7 +111,8 @@ void Navigator::navigate(Input in, const StillnessState& still, std::vector<Esti
   // Samples lost before this one: the step bridges them, and the epoch's noise says what they cost.
   const double step_dt = in.t - prev_->t, dt_nominal = checks_.dt_nominal();
   const bool gap = checks_.lost_samples(step_dt);
-  // An axial gyro at its range: the spin from the accelerometers stands in for its rate.
+  // An axial gyro at its range: the spin the magnetometers or the accelerometers see stands in for
+  // its rate.
   std::optional<ClippedSpin::Spin> spin;
   if (filter_.drilling_tool() && ((in.clipped & kAxialGyroClipped) != 0 || in.gyro_bad) && !gap) {
     spin = spin_.through(in, *prev_, step_dt, filter_.mechanization().tool_to_nav(), filter_.gravity());
@@ -130,24 +131,7 @@ void Navigator::navigate(Input in, const StillnessState& still, std::vector<Esti
   // (A drilling tool's. A foot's gaps, a few samples within a stride, are bridged as before: with
   // the allowance the short walk of tests/data/walks ended 0.176 m off instead of 0.138 m.)
   if (gap && filter_.drilling_tool()) {
-    const Eigen::Matrix3d c_bn = filter_.mechanization().tool_to_nav();
-    faults_.bridge(*prev_, in, dt_nominal, c_bn);
-    // A drilling tool's velocity across its axis is vibration, whose mean over a gap is nothing:
-    // the instant's, held through the gap, would move it by that velocity times the gap.
-    const Eigen::Vector3d v = filter_.mechanization().state().v;
-    const Eigen::Vector3d across = v - c_bn.col(2) * c_bn.col(2).dot(v);
-    // Through the gap in steps of the nominal interval, on readings made up (stream_faults.hpp).
-    const std::vector<Input> made_up = StreamFaults::gap_readings(
-        from, at, c_bn, dt_nominal, Eigen::Vector3d(0.0, 0.0, -filter_.gravity()), filter_.accel_bias());
-    for (std::size_t k = 1; k < made_up.size(); ++k)
-      filter_.step(made_up[k - 1], made_up[k], nullptr, config_.samples_are_means, dt_nominal);
-    filter_.shift_motion(-across, -across * (at.t - from.t));
-    // The field across the axis says how far the tool turned about it over the gap.
-    if (const std::optional<double> turn =
-            unseen_turn_across_gap(*prev_, in, c_bn, filter_.mechanization().tool_to_nav())) {
-      filter_.turn_about_axis(
-          faults_.axial_turn_seen(filter_.mechanization().tool_to_nav().col(2), *turn, in.b->head<2>().norm()));
-    }
+    bridge_gap(from, at, in, dt_nominal);
   } else {
     if (filter_.drilling_tool() && shocks_.starts(in)) shocks_.start(filter_.mechanization().state());
     filter_.step(from, at, from2 ? &*from2 : nullptr, config_.samples_are_means, checks_.dt_nominal());
@@ -161,7 +145,8 @@ void Navigator::navigate(Input in, const StillnessState& still, std::vector<Esti
   faults_.observe(in, step_dt, dt_nominal);
   // At this reading's attitude: the filter's state is the last full update's, degrees behind a
   // turning tool.
-  if (in.clipped != 0 || spin) ranges_.integrate(in, step_dt, filter_.mechanization().tool_to_nav(), spin ? spin_.source_name() : nullptr);
+  if (in.clipped != 0 || spin)
+    ranges_.integrate(in, step_dt, filter_.mechanization().tool_to_nav(), spin ? spin_.source_name() : nullptr);
   if (in.depth) {
     stops_.take_depth(in.t, *in.depth, prev_->depth.has_value(), filter_);
     unseen_.note_depth(in.t);
@@ -182,6 +167,28 @@ void Navigator::navigate(Input in, const StillnessState& still, std::vector<Esti
     prev2_instant_ = prev_instant;
   }
   prev_ = std::move(in);
+}
+
+// A drilling tool's step across lost samples (from and at: the readings either side at their
+// instants; in: the reading after the gap as it came).
+void Navigator::bridge_gap(const Input& from, const Input& at, const Input& in, double dt_nominal) {
+  const Eigen::Matrix3d c_bn = filter_.mechanization().tool_to_nav();
+  faults_.bridge(*prev_, in, dt_nominal, c_bn);
+  // Its velocity across the axis is vibration, whose mean over a gap is nothing: the instant's,
+  // held through the gap, would move it by that velocity times the gap.
+  const Eigen::Vector3d v = filter_.mechanization().state().v;
+  const Eigen::Vector3d across = v - c_bn.col(2) * c_bn.col(2).dot(v);
+  // Through the gap in steps of the nominal interval, on readings made up (stream_faults.hpp).
+  const std::vector<Input> made_up = StreamFaults::gap_readings(
+      from, at, c_bn, dt_nominal, Eigen::Vector3d(0.0, 0.0, -filter_.gravity()), filter_.accel_bias());
+  for (std::size_t k = 1; k < made_up.size(); ++k)
+    filter_.step(made_up[k - 1], made_up[k], nullptr, config_.samples_are_means, dt_nominal);
+  filter_.shift_motion(-across, -across * (at.t - from.t));
+  // The field across the axis says how far the tool turned about it over the gap.
+  if (const std::optional<double> turn = unseen_turn_across_gap(*prev_, in, c_bn, filter_.mechanization().tool_to_nav())) {
+    filter_.turn_about_axis(
+        faults_.axial_turn_seen(filter_.mechanization().tool_to_nav().col(2), *turn, in.b->head<2>().norm()));
+  }
 }
 
 void Navigator::before_alignment(const Input& in, std::vector<Estimate>& out) {

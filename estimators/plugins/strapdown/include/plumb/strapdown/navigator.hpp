@@ -77,6 +77,7 @@ class Navigator {
   void count(const char* name, std::uint64_t n = 1) { counters_[name] += n; }
   void process(const Input& in, std::vector<Estimate>& out);
   void navigate(Input in, const StillnessState& still, std::vector<Estimate>& out);
+  void bridge_gap(const Input& from, const Input& at, const Input& in, double dt_nominal);
   void before_alignment(const Input& in, std::vector<Estimate>& out);
   void align(const Input& in);
   void epoch(const Input& in, std::vector<Estimate>& out);
