@@ -1,6 +1,7 @@
 #include "reader.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <iostream>
 #include <optional>
@@ -60,13 +61,21 @@ topics::MeasuredDepth to_message(const wits::DepthReading& r, const ReaderOption
   return m;
 }
 
+// A feed's first depth published before discovery matched its reader goes to nobody: wait, bounded,
+// for a reader first (the link's bytes wait in the socket or the tty meanwhile), and say what happened.
 bool wait_for_readers(transport::Writer<topics::MeasuredDepth>& writer, double seconds) {
   if (seconds <= 0) return true;
   std::cout << kProgram << ": waiting up to " << seconds << " s for a reader of plumb/depth" << std::endl;
   const auto start = Clock::now();
   while (writer.matched_readers() == 0 && seconds_since(start) < seconds && !components::g_stop)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  return !components::g_stop;
+  if (components::g_stop) return false;
+  if (writer.matched_readers() == 0)
+    std::cout << kProgram << ": no reader of plumb/depth after " << seconds << " s; publishing anyway" << std::endl;
+  else
+    std::cout << kProgram << ": " << writer.matched_readers() << " reader(s) of plumb/depth matched after "
+              << std::round(seconds_since(start) * 100) / 100 << " s" << std::endl;
+  return true;
 }
 
 // The link's events in the log, once each (a server waiting, a client retrying, say it once).
