@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "plumb/survey/survey.hpp"
 #include "plumb/survey/survey_file.hpp"
@@ -17,11 +18,18 @@ class SurveyStore {
   // Loads `path` into `survey` (which must be empty). Messages for the operator go to `note`.
   // Throws std::runtime_error when the file exists but is not a survey file (never overwritten).
   SurveyStore(const std::string& path, survey::Survey& survey, const std::function<void(const std::string&)>& note);
-  void append(const survey::SurveyRow& row) { appender_->append(row); }
-  void comment(const std::string& text) { appender_->append_comment(text); }
+  // Without a given section azimuth every row's vertical section follows the newest station's
+  // closure: the file is then rewritten whole (atomically) at each station, its comments after the
+  // header, instead of growing by one row.
+  void append(const survey::SurveyRow& row);
+  void comment(const std::string& text);
   std::size_t resumed() const { return resumed_; }
 
  private:
+  void rewrite();
+  std::string path_;
+  const survey::Survey& survey_;
+  std::vector<std::string> comments_;  // the comment lines written since the start, for rewrite()
   std::unique_ptr<survey::SurveyAppender> appender_;
   std::size_t resumed_ = 0;
 };

@@ -82,6 +82,33 @@ TEST(Survey, TrueSurveyNeedsDeclinationAndSaysSo) {
   EXPECT_EQ(s.rows()[0].reference, AzimuthReference::True);
 }
 
+// Issue 36: the vertical section defaulted to azimuth 0 while the well went to 120, and ran off to
+// -4 m. Without --section-azimuth it is along the well's closure: the last station's section is its
+// closure distance, and every row follows the newest station; a given azimuth still wins.
+TEST(Survey, SectionAzimuthDefaultsToTheClosureOfTheLastStation) {
+  Survey s(options());
+  for (int k = 0; k < 8; ++k) s.add(station(100 + 30 * k, 5 * k, 120 + k));
+  const auto& last = s.rows().back().point;
+  ASSERT_GT(last.closure_distance_m, 10);
+  EXPECT_TRUE(s.section_azimuth_is_closure());
+  EXPECT_DOUBLE_EQ(s.section_azimuth_deg(), last.closure_azimuth_deg);
+  EXPECT_NEAR(last.vertical_section_m, last.closure_distance_m, 1e-9);
+  const double a = last.closure_azimuth_deg * 3.14159265358979323846 / 180;
+  for (const auto& r : s.rows())
+    EXPECT_NEAR(r.point.vertical_section_m, r.point.north_m * std::cos(a) + r.point.east_m * std::sin(a), 1e-9);
+  const std::string text = survey_text(s);
+  EXPECT_NE(text.find(" (closure)\n"), std::string::npos) << text.substr(0, 300);
+
+  auto given = options();
+  given.section_azimuth_deg = 0;
+  Survey north(given);
+  for (int k = 0; k < 8; ++k) north.add(station(100 + 30 * k, 5 * k, 120 + k));
+  EXPECT_FALSE(north.section_azimuth_is_closure());
+  EXPECT_NEAR(north.rows().back().point.vertical_section_m, north.rows().back().point.north_m, 1e-12);
+  EXPECT_LT(north.rows().back().point.vertical_section_m, 0);
+  EXPECT_EQ(survey_text(north).find("(closure)"), std::string::npos);
+}
+
 std::string temp_path(const std::string& name) {
   return (std::filesystem::temp_directory_path() / ("plumb_survey_test_" + std::to_string(::getpid()) + name)).string();
 }

@@ -85,12 +85,15 @@ void sync_folder(const std::string& path) {
 
 }  // namespace
 
-void write_survey_header(std::ostream& out, const SurveyOptions& o) {
+void write_survey_header(std::ostream& out, const SurveyOptions& o, double closure_azimuth_deg) {
   out << kSurveyFormatLine << '\n';
   out << "# azimuth_reference " << to_string(o.reference);
   if (o.north.declination_known) out << " declination_deg " << num(o.north.declination_deg);
   if (o.north.convergence_known) out << " convergence_deg " << num(o.north.convergence_deg);
-  out << " section_azimuth_deg " << num(o.section_azimuth_deg) << '\n';
+  if (o.section_azimuth_deg)
+    out << " section_azimuth_deg " << num(*o.section_azimuth_deg) << '\n';
+  else
+    out << " section_azimuth_deg " << num(closure_azimuth_deg) << " (closure)\n";
   out << "# reference gravity_mps2 " << (o.field.gravity_mps2 ? num(*o.field.gravity_mps2) : "none") << " total_b_uT "
       << (o.field.total_b_uT ? num(*o.field.total_b_uT) : "none") << " dip_deg "
       << (o.field.dip_deg ? num(*o.field.dip_deg) : "none") << "; tolerances " << num(o.tolerances.gravity_mps2)
@@ -133,7 +136,7 @@ void write_survey_row(std::ostream& out, const SurveyRow& row) { out << survey_r
 
 std::string survey_text(const Survey& survey) {
   std::ostringstream out;
-  write_survey_header(out, survey.options());
+  write_survey_header(out, survey.options(), survey.section_azimuth_deg());
   std::string text = out.str();
   for (const auto& row : survey.rows()) text += survey_row_line(row);
   return text;

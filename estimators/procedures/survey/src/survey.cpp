@@ -29,7 +29,8 @@ Survey::Survey(SurveyOptions o) : options_(std::move(o)) {
   (void)convert_magnetic_azimuth(0, options_.reference, options_.north);
   const auto& t = options_.tolerances;
   require(t.gravity_mps2 > 0 && t.total_b_uT > 0 && t.dip_deg > 0, "QC tolerances must be > 0");
-  require(std::isfinite(options_.section_azimuth_deg), "the vertical-section azimuth must be finite");
+  require(!options_.section_azimuth_deg || std::isfinite(*options_.section_azimuth_deg),
+          "the vertical-section azimuth must be finite");
   require(options_.tie_in.allFinite(), "the tie-in position must be finite");
   require(std::isfinite(options_.north.declination_sd_deg) && options_.north.declination_sd_deg >= 0,
           "the declination sigma must be >= 0");
@@ -144,13 +145,23 @@ const SurveyRow& Survey::add(const Station& s) {
   }
   geometry_.push_back(here);
   sigma_.push_back({s.md_sd_m, s.inclination_sd_deg, s.azimuth_sd_deg, s.magnetic_azimuth_deg});
-  fill_section_and_closure(row.point, options_.section_azimuth_deg);
+  fill_section_and_closure(row.point, options_.section_azimuth_deg.value_or(0));
   // The uncertainty at this station depends on the stations above it only; the whole propagation
   // is O(stations) and a survey holds hundreds, not millions.
   add_model_uncertainty(row);
   if (!row.qc.pass) ++failed_qc_;
   rows_.push_back(std::move(row));
+  if (section_azimuth_is_closure()) {
+    // The well's direction moved with this station: every row's section along it (O(stations)).
+    const double azimuth = section_azimuth_deg();
+    for (auto& r : rows_) fill_section_and_closure(r.point, azimuth);
+  }
   return rows_.back();
+}
+
+double Survey::section_azimuth_deg() const {
+  if (options_.section_azimuth_deg) return *options_.section_azimuth_deg;
+  return rows_.empty() ? 0.0 : rows_.back().point.closure_azimuth_deg;
 }
 
 PositionUncertainty Survey::uncertainty_between(std::size_t course, double md_m, double inclination_deg,
