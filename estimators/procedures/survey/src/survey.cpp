@@ -7,6 +7,7 @@
 #include <string>
 
 #include "plumb/core/attitude.hpp"
+#include "plumb/survey/file_precision.hpp"
 
 namespace plumb::survey {
 namespace {
@@ -95,7 +96,31 @@ void Survey::add_model_uncertainty(SurveyRow& row) {
   row.azimuth_random_sd_deg = std::sqrt(azi_random);
 }
 
-const SurveyRow& Survey::add(const Station& s) {
+namespace {
+
+// The station as its survey file holds it (plumb/survey/file_precision.hpp): what is computed from
+// it is then what a survey read back from its file computes.
+Station station_as_filed(Station s) {
+  using namespace precision;
+  s.t_s = round_decimals(s.t_s, kSecondDecimals);
+  s.md_m = round_decimals(s.md_m, kMetreDecimals);
+  s.md_sd_m = round_sigma(s.md_sd_m);
+  s.inclination_deg = round_decimals(s.inclination_deg, kDegreeDecimals);
+  s.inclination_sd_deg = round_sigma(s.inclination_sd_deg);
+  s.magnetic_azimuth_deg = round_decimals(s.magnetic_azimuth_deg, kDegreeDecimals);
+  s.azimuth_sd_deg = round_sigma(s.azimuth_sd_deg);
+  s.total_g_mps2 = round_decimals(s.total_g_mps2, kGravityDecimals);
+  s.total_b_uT = round_decimals(s.total_b_uT, kFieldDecimals);
+  s.dip_deg = round_decimals(s.dip_deg, kDegreeDecimals);
+  s.toolface_deg = round_decimals(s.toolface_deg, kDegreeDecimals);
+  s.toolface_sd_deg = round_sigma(s.toolface_sd_deg);
+  return s;
+}
+
+}  // namespace
+
+const SurveyRow& Survey::add(const Station& given) {
+  const Station s = station_as_filed(given);
   const std::string name = "station " + std::to_string(rows_.size()) + " (MD " + number(s.md_m) + " m)";
   if (!std::isfinite(s.md_m)) throw StationError(name + ": measured depth is not a number");
   if (!(std::isfinite(s.inclination_deg) && s.inclination_deg >= 0 && s.inclination_deg <= 180))
