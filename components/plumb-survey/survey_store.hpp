@@ -1,6 +1,7 @@
 // The survey kept in a file so that a restarted plumb-survey resumes with every station: read at
 // start (a truncated or damaged tail is reported, the whole old file saved beside it, the valid
-// part kept), rewritten whole through a temporary file, then grown one fsync'ed row per station.
+// part kept), rewritten whole through a temporary file, then grown one fsync'ed row per station
+// (or, when the vertical section follows the closure, rewritten whole at each station).
 #pragma once
 
 #include <functional>
