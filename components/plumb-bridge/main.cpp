@@ -25,6 +25,7 @@ namespace plumb::bridge_component {
 namespace {
 
 constexpr const char* kProgram = "plumb-bridge";
+constexpr double kReplayWaitS = 5;
 using Clock = std::chrono::steady_clock;
 
 struct Options {
@@ -46,7 +47,9 @@ struct Options {
   double backoff_min_s = 0.1;
   double backoff_max_s = 5.0;
   double duration_s = 0;
-  double wait_subscribers_s = 0;
+  // Negative: not given. A replay then waits up to kReplayWaitS; a device does not wait, because
+  // its kernel buffer would overflow meanwhile (and a live stream has no start to keep).
+  double wait_subscribers_s = -1;
   double linger_s = 1.0;
   int max_logged_errors = 20;
 };
@@ -104,9 +107,9 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--duration", o.duration_s, "stop after this many seconds (0: run until Ctrl-C or the replay ends)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--wait-subscribers", o.wait_subscribers_s,
-                 "seconds to wait at most for a sensor topic reader before reading the source")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
+                 "seconds to wait at most for a sensor topic reader before reading the source, so that a replay "
+                 "loses no start (default: 5 with --replay, 0 with --device; 0: publish at once)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--linger", o.linger_s, "seconds to stay after the end so reliable readers catch up")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
@@ -201,6 +204,24 @@ CalibrationModel calibration_from_file(const Options& o) {
   return model;
 }
 
+// A replay published before discovery matched its reader goes to nobody (or starts in the middle):
+// wait, bounded, for a reader, and say what happened.
+void wait_for_sensor_readers(const Options& o, const PublisherOptions& po, const Publisher& publisher) {
+  const double wait_s = o.wait_subscribers_s >= 0 ? o.wait_subscribers_s : (o.replay.empty() ? 0.0 : kReplayWaitS);
+  if (wait_s <= 0) return;
+  log("waiting up to " + seconds_text(wait_s) + " s for a reader of " + po.raw_topic + " or " + po.calibrated_topic);
+  const auto start = Clock::now();
+  const auto until = start + std::chrono::duration<double>(wait_s);
+  while (publisher.sensor_readers() == 0 && Clock::now() < until && !components::g_stop)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  const double waited_s = std::chrono::duration<double>(Clock::now() - start).count();
+  if (publisher.sensor_readers() == 0)
+    log("no reader after " + seconds_text(wait_s) + " s; publishing anyway");
+  else
+    log(std::to_string(publisher.sensor_readers()) + " sensor topic reader(s) matched after " +
+        seconds_text(std::round(waited_s * 100) / 100) + " s; publishing");
+}
+
 // Says what is read and published where, applies --calibration, and says whether coefficients are
 // still awaited.
 void start_publishing(const Options& o, const PublisherOptions& po, const components::Connection& connection,
@@ -213,12 +234,7 @@ void start_publishing(const Options& o, const PublisherOptions& po, const compon
   if (!publisher.has_calibration())
     log("no calibration yet: raw data flows on " + po.raw_topic + "; " + po.calibrated_topic +
         " starts once coefficients arrive" + (po.calibration_topic.empty() ? "" : " on " + po.calibration_topic));
-  if (o.wait_subscribers_s > 0) {
-    const auto until = Clock::now() + std::chrono::duration<double>(o.wait_subscribers_s);
-    while (publisher.sensor_readers() == 0 && Clock::now() < until && !components::g_stop)
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    log(std::to_string(publisher.sensor_readers()) + " sensor topic reader(s) matched");
-  }
+  wait_for_sensor_readers(o, po, publisher);
 }
 
 // The bridge's loop: samples from the source, checked, batched and published; coefficients polled;

@@ -1,10 +1,12 @@
 #include "survey_store.hpp"
 
 #include <filesystem>
+#include <sstream>
 
 namespace plumb::survey_component {
 
-SurveyStore::SurveyStore(const std::string& path, survey::Survey& survey, const std::function<void(const std::string&)>& note) {
+SurveyStore::SurveyStore(const std::string& path, survey::Survey& survey, const std::function<void(const std::string&)>& note)
+    : path_(path), survey_(survey) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (fs::exists(path, ec) && fs::file_size(path, ec) > 0) {
@@ -34,6 +36,32 @@ SurveyStore::SurveyStore(const std::string& path, survey::Survey& survey, const 
   // are appended to it.
   survey::write_file_atomically(path, survey::survey_text(survey));
   appender_ = std::make_unique<survey::SurveyAppender>(path, survey.options());
+}
+
+void SurveyStore::append(const survey::SurveyRow& row) {
+  if (survey_.section_azimuth_is_closure())
+    rewrite();
+  else
+    appender_->append(row);
+}
+
+void SurveyStore::comment(const std::string& text) {
+  std::string line = text;
+  for (char& c : line)
+    if (c == '\n' || c == '\r') c = ' ';
+  comments_.push_back(line);
+  if (survey_.section_azimuth_is_closure())
+    rewrite();
+  else
+    appender_->append_comment(text);
+}
+
+void SurveyStore::rewrite() {
+  std::ostringstream out;
+  survey::write_survey_header(out, survey_.options(), survey_.section_azimuth_deg());
+  for (const auto& c : comments_) out << "# " << c << '\n';
+  for (const auto& r : survey_.rows()) out << survey::survey_row_line(r);
+  survey::write_file_atomically(path_, out.str());
 }
 
 }  // namespace plumb::survey_component

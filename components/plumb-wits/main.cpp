@@ -66,7 +66,10 @@ int main(int argc, char** argv) {
   components::add_transport_options(app, o.transport);
   wits_component::add_link_options(app, o, reconnect_max_s);
   wits_component::add_depth_options(app, o, units, bit, hole, moving, slips);
-  app.add_option("--wait-subscribers", o.wait_subscribers_s, "wait up to this many seconds for a reader of plumb/depth first");
+  app.add_option("--wait-subscribers", o.wait_subscribers_s,
+                 "wait up to this many seconds for a reader of plumb/depth before reading the feed (0: publish at once)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   app.add_option("--count", o.count, "exit after publishing this many depths (0: run until stopped)")->capture_default_str();
   app.add_option("--silence-notice", o.silence_notice_s, "say so when connected but no frame came for this many seconds")
       ->capture_default_str();

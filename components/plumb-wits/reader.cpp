@@ -1,6 +1,7 @@
 #include "reader.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <iostream>
 #include <optional>
@@ -60,13 +61,25 @@ topics::MeasuredDepth to_message(const wits::DepthReading& r, const ReaderOption
   return m;
 }
 
-bool wait_for_readers(transport::Writer<topics::MeasuredDepth>& writer, double seconds) {
+// A feed's first depth published before discovery matched its reader goes to nobody: wait, bounded,
+// for a reader first (the link's bytes wait in the socket or the tty meanwhile), and say what happened.
+// Its status goes out meanwhile: a monitor sees a plumb-wits that waits, not nothing.
+bool wait_for_readers(transport::Writer<topics::MeasuredDepth>& writer, double seconds,
+                      components::StatusReporter& status) {
   if (seconds <= 0) return true;
   std::cout << kProgram << ": waiting up to " << seconds << " s for a reader of plumb/depth" << std::endl;
   const auto start = Clock::now();
-  while (writer.matched_readers() == 0 && seconds_since(start) < seconds && !components::g_stop)
+  while (writer.matched_readers() == 0 && seconds_since(start) < seconds && !components::g_stop) {
+    if (status.due()) status.publish("running", {{"depths_published", 0}, {"readers", 0}});
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  return !components::g_stop;
+  }
+  if (components::g_stop) return false;
+  if (writer.matched_readers() == 0)
+    std::cout << kProgram << ": no reader of plumb/depth after " << seconds << " s; publishing anyway" << std::endl;
+  else
+    std::cout << kProgram << ": " << writer.matched_readers() << " reader(s) of plumb/depth matched after "
+              << std::round(seconds_since(start) * 100) / 100 << " s" << std::endl;
+  return true;
 }
 
 // The link's events in the log, once each (a server waiting, a client retrying, say it once).
@@ -101,7 +114,7 @@ int run_reader(const ReaderOptions& o) {
                                                               transport::default_qos_for_topic(transport::topic_names::kDepth));
   // One reader per tool: the tool in the component's name tells them apart in plumb status.
   components::StatusReporter status(*conn.participant, std::string(kProgram) + "/" + o.tool_id);
-  if (!wait_for_readers(writer, o.wait_subscribers_s)) return 0;
+  if (!wait_for_readers(writer, o.wait_subscribers_s, status)) return 0;
   std::cout << kProgram << ": reading WITS level 0 from " << link->describe() << " for tool '" << o.tool_id
             << "' (bit depth item " << o.depth.bit_item << ", sensor " << o.depth.sensor_offset_m
             << " m behind the bit); publishing plumb/depth on " << conn.transport->name() << std::endl;

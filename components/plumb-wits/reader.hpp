@@ -22,7 +22,7 @@ struct ReaderOptions {
   wits::DepthOptions depth;
   double depth_sd_m = 0;
   double silence_notice_s = 10;  // connected but no frame this long: say so
-  double wait_subscribers_s = 0;
+  double wait_subscribers_s = 5;  // a bounded wait for a reader, so that the first depth is not lost
   long long count = 0;           // exit after this many depths published (0: until stopped)
   double linger_s = 1;
   wits::Backoff backoff;

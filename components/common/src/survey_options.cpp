@@ -33,8 +33,9 @@ void add_survey_options(CLI::App& app, SurveyCliOptions& o) {
   app.add_option("--tol-dip", o.tol_dip, "QC tolerance on dip, deg (default 0.25)");
   app.add_option("--skip-check", o.skip_checks, "QC check not to run: gravity, field or dip (repeatable)")
       ->check(CLI::IsMember({"gravity", "field", "dip"}));
-  app.add_option("--section-azimuth", o.section_azimuth_deg, "vertical-section azimuth, deg, in the survey's reference")
-      ->capture_default_str();
+  app.add_option("--section-azimuth", o.section_azimuth_deg,
+                 "vertical-section azimuth, deg, in the survey's reference (default: the closure azimuth of the last "
+                 "station, the well's direction)");
   app.add_option("--tie-in", o.tie_in, "position of the first station: NORTH,EAST,TVD in m (default 0,0,0)")
       ->delimiter(',')
       ->expected(3);

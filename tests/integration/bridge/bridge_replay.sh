@@ -47,7 +47,7 @@ grep -q "sensor.csv:45: column 'bz'" "$work/bridge.err.out" || { echo "FAIL - li
 
 # --strict: exit 1, one line naming line and column.
 rc=0
-"$bin/plumb-bridge" --transport "$transport" --replay "$csv" --rate max --strict > "$work/strict.out" 2> "$work/strict.err.out" || rc=$?
+"$bin/plumb-bridge" --transport "$transport" --replay "$csv" --rate max --strict --wait-subscribers 0 > "$work/strict.out" 2> "$work/strict.err.out" || rc=$?
 [ $rc -eq 1 ] || { echo "FAIL - --strict exit code $rc"; fails=$((fails + 1)); }
 grep -q "sensor.csv:20: column 'fy'" "$work/strict.err.out" || { echo "FAIL - --strict message"; fails=$((fails + 1)); }
 

@@ -69,6 +69,13 @@ mds = [float(r["md_m"]) for r in rows]
 check(all(abs(md - 1.5 * k) < 0.02 for k, md in enumerate(mds)), f"file: one station per stop at 0, 1.5, ... 9 m: {mds}")
 check(sorted(int(r["index"]) for r in echo) == list(range(7)), f"late joiner: every station exactly once ({[r['index'] for r in echo]})")
 check(all(r["qc"] == "pass" for r in rows), "every station passes QC against the simulated field")
+# No --section-azimuth: the section follows the well's closure, the file rewritten at each station.
+header = [l for l in open(sys.argv[1]) if l.startswith("# azimuth_reference")]
+last = rows[-1]
+check(bool(header) and header[0].rstrip().endswith("(closure)") and
+      abs(float(last["vertical_section_m"]) - float(last["closure_distance_m"])) <= 0.001,
+      f"section along the closure: {header[0].split('section_azimuth_deg')[-1].strip() if header else 'no header'}, "
+      f"last station's section {last['vertical_section_m']} m = closure {last['closure_distance_m']} m")
 # Truth at each station's time (the tool stands still during the window).
 ts = [float(t["t"]) for t in truth]
 import bisect

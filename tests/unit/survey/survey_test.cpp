@@ -5,6 +5,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include <random>
 
@@ -82,6 +85,33 @@ TEST(Survey, TrueSurveyNeedsDeclinationAndSaysSo) {
   EXPECT_EQ(s.rows()[0].reference, AzimuthReference::True);
 }
 
+// Issue 36: the vertical section defaulted to azimuth 0 while the well went to 120, and ran off to
+// -4 m. Without --section-azimuth it is along the well's closure: the last station's section is its
+// closure distance, and every row follows the newest station; a given azimuth still wins.
+TEST(Survey, SectionAzimuthDefaultsToTheClosureOfTheLastStation) {
+  Survey s(options());
+  for (int k = 0; k < 8; ++k) s.add(station(100 + 30 * k, 5 * k, 120 + k));
+  const auto& last = s.rows().back().point;
+  ASSERT_GT(last.closure_distance_m, 10);
+  EXPECT_TRUE(s.section_azimuth_is_closure());
+  EXPECT_DOUBLE_EQ(s.section_azimuth_deg(), last.closure_azimuth_deg);
+  EXPECT_NEAR(last.vertical_section_m, last.closure_distance_m, 1e-9);
+  const double a = last.closure_azimuth_deg * 3.14159265358979323846 / 180;
+  for (const auto& r : s.rows())
+    EXPECT_NEAR(r.point.vertical_section_m, r.point.north_m * std::cos(a) + r.point.east_m * std::sin(a), 1e-9);
+  const std::string text = survey_text(s);
+  EXPECT_NE(text.find(" (closure)\n"), std::string::npos) << text.substr(0, 300);
+
+  auto given = options();
+  given.section_azimuth_deg = 0;
+  Survey north(given);
+  for (int k = 0; k < 8; ++k) north.add(station(100 + 30 * k, 5 * k, 120 + k));
+  EXPECT_FALSE(north.section_azimuth_is_closure());
+  EXPECT_NEAR(north.rows().back().point.vertical_section_m, north.rows().back().point.north_m, 1e-12);
+  EXPECT_LT(north.rows().back().point.vertical_section_m, 0);
+  EXPECT_EQ(survey_text(north).find("(closure)"), std::string::npos);
+}
+
 std::string temp_path(const std::string& name) {
   return (std::filesystem::temp_directory_path() / ("plumb_survey_test_" + std::to_string(::getpid()) + name)).string();
 }
@@ -100,6 +130,58 @@ TEST(SurveyFile, AppendedRowsReadBackIntoTheSameSurvey) {
   Survey b(options());
   for (const auto& st : loaded.stations) b.add(st);
   EXPECT_EQ(survey_text(a), survey_text(b));
+  std::filesystem::remove(path);
+}
+
+// Issue 36: 17-digit values (`md_sd_m 2.6e-16`). Each column now has the precision fit for it
+// (0.001 m, 0.001 deg, sigmas to 3 significant digits, arithmetic noise 0), and a station enters the
+// survey rounded the same way, so the file still reads back as the same survey, digit for digit.
+TEST(SurveyFile, ColumnsHaveTheirPrecisionAndStillReadBackExactly) {
+  const std::string path = temp_path("precision.csv");
+  std::filesystem::remove(path);
+  Survey a(options());
+  {
+    SurveyAppender out(path, a.options());
+    for (int k = 0; k < 4; ++k) {
+      Station st = station(100.123456789 + 10.0 / 3 * k, 10.987654321 + k / 7.0, 20.0 / 3 + k);
+      st.md_sd_m = 2.6e-16;
+      st.inclination_sd_deg = 0.0123456;
+      st.t_s = 1700000000.0 + k / 3.0;
+      out.append(a.add(st));
+    }
+  }
+  std::ifstream in(path);
+  std::string line, header, first;
+  while (std::getline(in, line) && line[0] == '#') {
+  }
+  header = line;
+  std::getline(in, first);
+  const auto value = [&](const std::string& row, const std::string& column) {
+    std::vector<std::string> names, values;
+    std::stringstream h(header), r(row);
+    for (std::string f; std::getline(h, f, ',');) names.push_back(f);
+    for (std::string f; std::getline(r, f, ',');) values.push_back(f);
+    for (std::size_t i = 0; i < names.size(); ++i)
+      if (names[i] == column) return values.at(i);
+    return std::string("(no column)");
+  };
+  EXPECT_EQ(value(first, "md_m"), "100.123");
+  EXPECT_EQ(value(first, "md_sd_m"), "0");
+  EXPECT_EQ(value(first, "inclination_deg"), "10.988");
+  EXPECT_EQ(value(first, "inclination_sd_deg"), "0.0123");
+  EXPECT_EQ(value(first, "magnetic_azimuth_deg"), "6.667");
+  EXPECT_EQ(value(first, "t"), "1700000000.000");
+  EXPECT_LE(value(first, "inclination_total_sd_deg").size(), 6u) << value(first, "inclination_total_sd_deg");
+  const auto loaded = read_survey_file(path);
+  ASSERT_TRUE(loaded.problem.empty()) << loaded.problem;
+  Survey b(options());
+  for (const auto& st : loaded.stations) b.add(st);
+  EXPECT_EQ(survey_text(a), survey_text(b));
+  for (std::size_t k = 0; k < a.rows().size(); ++k) {
+    EXPECT_EQ(a.rows()[k].station.md_m, b.rows()[k].station.md_m);
+    EXPECT_EQ(a.rows()[k].point.north_m, b.rows()[k].point.north_m);
+    EXPECT_EQ(a.rows()[k].uncertainty.covariance, b.rows()[k].uncertainty.covariance);
+  }
   std::filesystem::remove(path);
 }
 

@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +17,7 @@
 
 #include "plumb/core/number.hpp"
 #include "plumb/csv/files.hpp"
+#include "plumb/survey/file_precision.hpp"
 
 namespace plumb::survey {
 namespace {
@@ -47,8 +49,28 @@ std::string field_text(std::string s) {
   return s;
 }
 
-// The shortest text that reads back as the same double: a survey read back from its file is the
-// same survey, digit for digit.
+// Each column at the precision fit for it (plumb/survey/file_precision.hpp): `fixed` for depths,
+// positions, angles, times and fields, `sigma` for standard deviations. A station's inputs enter
+// the survey already rounded so, and read back as the same doubles.
+std::string fixed(double v, int decimals) {
+  if (!std::isfinite(v)) return "nan";
+  double rounded = precision::round_decimals(v, decimals);
+  if (rounded == 0) rounded = 0;  // no "-0.000"
+  char buffer[64];
+  const int n = std::snprintf(buffer, sizeof buffer, "%.*f", decimals, rounded);
+  return std::string(buffer, n > 0 && n < static_cast<int>(sizeof buffer) ? static_cast<std::size_t>(n) : 0);
+}
+std::string metres(double v) { return fixed(v, precision::kMetreDecimals); }
+std::string degrees(double v) { return fixed(v, precision::kDegreeDecimals); }
+std::string sigma(double v) {
+  if (!std::isfinite(v)) return "nan";
+  char buffer[32];
+  const int n = std::snprintf(buffer, sizeof buffer, "%.*g", precision::kSigmaDigits, precision::round_sigma(v));
+  return std::string(buffer, n > 0 && n < static_cast<int>(sizeof buffer) ? static_cast<std::size_t>(n) : 0);
+}
+
+// The shortest text that reads back as the same double: the covariances (a clearance scan reads
+// them back) and the reference field as given.
 std::string num(double v) {
   if (!std::isfinite(v)) return "nan";
   char buffer[32];
@@ -85,12 +107,15 @@ void sync_folder(const std::string& path) {
 
 }  // namespace
 
-void write_survey_header(std::ostream& out, const SurveyOptions& o) {
+void write_survey_header(std::ostream& out, const SurveyOptions& o, double closure_azimuth_deg) {
   out << kSurveyFormatLine << '\n';
   out << "# azimuth_reference " << to_string(o.reference);
   if (o.north.declination_known) out << " declination_deg " << num(o.north.declination_deg);
   if (o.north.convergence_known) out << " convergence_deg " << num(o.north.convergence_deg);
-  out << " section_azimuth_deg " << num(o.section_azimuth_deg) << '\n';
+  if (o.section_azimuth_deg)
+    out << " section_azimuth_deg " << num(*o.section_azimuth_deg) << '\n';
+  else
+    out << " section_azimuth_deg " << degrees(closure_azimuth_deg) << " (closure)\n";
   out << "# reference gravity_mps2 " << (o.field.gravity_mps2 ? num(*o.field.gravity_mps2) : "none") << " total_b_uT "
       << (o.field.total_b_uT ? num(*o.field.total_b_uT) : "none") << " dip_deg "
       << (o.field.dip_deg ? num(*o.field.dip_deg) : "none") << "; tolerances " << num(o.tolerances.gravity_mps2)
@@ -105,23 +130,25 @@ std::string survey_row_line(const SurveyRow& r) {
   const auto& c = u.covariance;
   const auto& q = r.qc;
   std::ostringstream o;
-  o << r.index << ',' << num(s.t_s) << ',' << field_text(s.tool_id) << ',' << field_text(s.source) << ','
-    << num(s.md_m) << ',' << num(s.md_sd_m) << ',' << num(s.inclination_deg) << ','
-    << num(s.inclination_sd_deg) << ',' << num(r.azimuth_deg) << ',' << num(s.azimuth_sd_deg) << ','
-    << to_string(r.reference) << ',' << num(s.magnetic_azimuth_deg) << ',' << (s.azimuth_valid ? 1 : 0) << ','
-    << num(p.north_m) << ',' << num(p.east_m) << ',' << num(p.tvd_m) << ',' << num(p.dogleg_deg) << ','
-    << num(p.dls_deg_per_30m) << ',' << num(p.dls_deg_per_100ft) << ',' << num(p.vertical_section_m) << ','
-    << num(p.closure_distance_m) << ',' << num(p.closure_azimuth_deg) << ',' << num(u.north_sd_m) << ','
-    << num(u.east_sd_m) << ',' << num(u.tvd_sd_m) << ',' << num(u.major_sd_m) << ',' << num(u.minor_sd_m) << ','
-    << num(u.major_azimuth_deg) << ',' << num(c(0, 0)) << ',' << num(c(0, 1)) << ',' << num(c(0, 2)) << ','
-    << num(c(1, 1)) << ',' << num(c(1, 2)) << ',' << num(c(2, 2)) << ',' << num(s.total_g_mps2) << ','
-    << num(s.total_b_uT) << ',' << num(s.dip_deg) << ',' << num(q.gravity_residual_mps2) << ','
-    << num(q.total_b_residual_uT) << ',' << num(q.dip_residual_deg) << ',' << num(s.toolface_deg) << ','
-    << num(s.toolface_sd_deg) << ',' << s.windows << ',' << num(r.inclination_random_sd_deg) << ','
-    << num(r.inclination_total_sd_deg) << ',' << num(r.azimuth_random_sd_deg) << ',' << num(r.azimuth_total_sd_deg)
-    << ',' << num(r.random_uncertainty.north_sd_m) << ',' << num(r.random_uncertainty.east_sd_m) << ','
-    << num(r.random_uncertainty.tvd_sd_m) << ',' << num(r.random_uncertainty.major_sd_m) << ','
-    << num(r.random_uncertainty.minor_sd_m) << ',' << optional_num(r.field.gravity_mps2) << ','
+  using precision::kFieldDecimals, precision::kGravityDecimals, precision::kSecondDecimals;
+  o << r.index << ',' << fixed(s.t_s, kSecondDecimals) << ',' << field_text(s.tool_id) << ',' << field_text(s.source)
+    << ',' << metres(s.md_m) << ',' << sigma(s.md_sd_m) << ',' << degrees(s.inclination_deg) << ','
+    << sigma(s.inclination_sd_deg) << ',' << degrees(r.azimuth_deg) << ',' << sigma(s.azimuth_sd_deg) << ','
+    << to_string(r.reference) << ',' << degrees(s.magnetic_azimuth_deg) << ',' << (s.azimuth_valid ? 1 : 0) << ','
+    << metres(p.north_m) << ',' << metres(p.east_m) << ',' << metres(p.tvd_m) << ',' << degrees(p.dogleg_deg) << ','
+    << degrees(p.dls_deg_per_30m) << ',' << degrees(p.dls_deg_per_100ft) << ',' << metres(p.vertical_section_m) << ','
+    << metres(p.closure_distance_m) << ',' << degrees(p.closure_azimuth_deg) << ',' << sigma(u.north_sd_m) << ','
+    << sigma(u.east_sd_m) << ',' << sigma(u.tvd_sd_m) << ',' << sigma(u.major_sd_m) << ',' << sigma(u.minor_sd_m) << ','
+    << degrees(u.major_azimuth_deg) << ',' << num(c(0, 0)) << ',' << num(c(0, 1)) << ',' << num(c(0, 2)) << ','
+    << num(c(1, 1)) << ',' << num(c(1, 2)) << ',' << num(c(2, 2)) << ',' << fixed(s.total_g_mps2, kGravityDecimals)
+    << ',' << fixed(s.total_b_uT, kFieldDecimals) << ',' << degrees(s.dip_deg) << ','
+    << fixed(q.gravity_residual_mps2, kGravityDecimals) << ',' << fixed(q.total_b_residual_uT, kFieldDecimals) << ','
+    << degrees(q.dip_residual_deg) << ',' << degrees(s.toolface_deg) << ',' << sigma(s.toolface_sd_deg) << ','
+    << s.windows << ',' << sigma(r.inclination_random_sd_deg) << ',' << sigma(r.inclination_total_sd_deg) << ','
+    << sigma(r.azimuth_random_sd_deg) << ',' << sigma(r.azimuth_total_sd_deg) << ','
+    << sigma(r.random_uncertainty.north_sd_m) << ',' << sigma(r.random_uncertainty.east_sd_m) << ','
+    << sigma(r.random_uncertainty.tvd_sd_m) << ',' << sigma(r.random_uncertainty.major_sd_m) << ','
+    << sigma(r.random_uncertainty.minor_sd_m) << ',' << optional_num(r.field.gravity_mps2) << ','
     << optional_num(r.field.total_b_uT) << ',' << optional_num(r.field.dip_deg) << ',' << field_text(r.error_model)
     << ',' << (q.pass ? "pass" : "fail") << ','
     << field_text(q.reason.empty() ? r.warning : (r.warning.empty() ? q.reason : q.reason + "; " + r.warning))
@@ -133,7 +160,7 @@ void write_survey_row(std::ostream& out, const SurveyRow& row) { out << survey_r
 
 std::string survey_text(const Survey& survey) {
   std::ostringstream out;
-  write_survey_header(out, survey.options());
+  write_survey_header(out, survey.options(), survey.section_azimuth_deg());
   std::string text = out.str();
   for (const auto& row : survey.rows()) text += survey_row_line(row);
   return text;

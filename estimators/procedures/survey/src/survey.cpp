@@ -7,6 +7,7 @@
 #include <string>
 
 #include "plumb/core/attitude.hpp"
+#include "plumb/survey/file_precision.hpp"
 
 namespace plumb::survey {
 namespace {
@@ -29,7 +30,8 @@ Survey::Survey(SurveyOptions o) : options_(std::move(o)) {
   (void)convert_magnetic_azimuth(0, options_.reference, options_.north);
   const auto& t = options_.tolerances;
   require(t.gravity_mps2 > 0 && t.total_b_uT > 0 && t.dip_deg > 0, "QC tolerances must be > 0");
-  require(std::isfinite(options_.section_azimuth_deg), "the vertical-section azimuth must be finite");
+  require(!options_.section_azimuth_deg || std::isfinite(*options_.section_azimuth_deg),
+          "the vertical-section azimuth must be finite");
   require(options_.tie_in.allFinite(), "the tie-in position must be finite");
   require(std::isfinite(options_.north.declination_sd_deg) && options_.north.declination_sd_deg >= 0,
           "the declination sigma must be >= 0");
@@ -94,7 +96,31 @@ void Survey::add_model_uncertainty(SurveyRow& row) {
   row.azimuth_random_sd_deg = std::sqrt(azi_random);
 }
 
-const SurveyRow& Survey::add(const Station& s) {
+namespace {
+
+// The station as its survey file holds it (plumb/survey/file_precision.hpp): what is computed from
+// it is then what a survey read back from its file computes.
+Station station_as_filed(Station s) {
+  using namespace precision;
+  s.t_s = round_decimals(s.t_s, kSecondDecimals);
+  s.md_m = round_decimals(s.md_m, kMetreDecimals);
+  s.md_sd_m = round_sigma(s.md_sd_m);
+  s.inclination_deg = round_decimals(s.inclination_deg, kDegreeDecimals);
+  s.inclination_sd_deg = round_sigma(s.inclination_sd_deg);
+  s.magnetic_azimuth_deg = round_decimals(s.magnetic_azimuth_deg, kDegreeDecimals);
+  s.azimuth_sd_deg = round_sigma(s.azimuth_sd_deg);
+  s.total_g_mps2 = round_decimals(s.total_g_mps2, kGravityDecimals);
+  s.total_b_uT = round_decimals(s.total_b_uT, kFieldDecimals);
+  s.dip_deg = round_decimals(s.dip_deg, kDegreeDecimals);
+  s.toolface_deg = round_decimals(s.toolface_deg, kDegreeDecimals);
+  s.toolface_sd_deg = round_sigma(s.toolface_sd_deg);
+  return s;
+}
+
+}  // namespace
+
+const SurveyRow& Survey::add(const Station& given) {
+  const Station s = station_as_filed(given);
   const std::string name = "station " + std::to_string(rows_.size()) + " (MD " + number(s.md_m) + " m)";
   if (!std::isfinite(s.md_m)) throw StationError(name + ": measured depth is not a number");
   if (!(std::isfinite(s.inclination_deg) && s.inclination_deg >= 0 && s.inclination_deg <= 180))
@@ -144,13 +170,23 @@ const SurveyRow& Survey::add(const Station& s) {
   }
   geometry_.push_back(here);
   sigma_.push_back({s.md_sd_m, s.inclination_sd_deg, s.azimuth_sd_deg, s.magnetic_azimuth_deg});
-  fill_section_and_closure(row.point, options_.section_azimuth_deg);
+  fill_section_and_closure(row.point, options_.section_azimuth_deg.value_or(0));
   // The uncertainty at this station depends on the stations above it only; the whole propagation
   // is O(stations) and a survey holds hundreds, not millions.
   add_model_uncertainty(row);
   if (!row.qc.pass) ++failed_qc_;
   rows_.push_back(std::move(row));
+  if (section_azimuth_is_closure()) {
+    // The well's direction moved with this station: every row's section along it (O(stations)).
+    const double azimuth = section_azimuth_deg();
+    for (auto& r : rows_) fill_section_and_closure(r.point, azimuth);
+  }
   return rows_.back();
+}
+
+double Survey::section_azimuth_deg() const {
+  if (options_.section_azimuth_deg) return *options_.section_azimuth_deg;
+  return rows_.empty() ? 0.0 : rows_.back().point.closure_azimuth_deg;
 }
 
 PositionUncertainty Survey::uncertainty_between(std::size_t course, double md_m, double inclination_deg,

@@ -23,7 +23,7 @@ struct SurveyCliOptions {
   std::string reference_file;
   std::optional<double> tol_gravity, tol_field, tol_dip;
   std::vector<std::string> skip_checks;
-  double section_azimuth_deg = 0;
+  std::optional<double> section_azimuth_deg;  // none: the closure azimuth of the last station
   std::vector<double> tie_in;  // north,east,tvd
   double depth_sd_m = -1;      // < 0: what the depth input says
   double depth_scale_sd = 0;

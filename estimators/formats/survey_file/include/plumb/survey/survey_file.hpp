@@ -17,7 +17,9 @@ inline constexpr const char* kSurveyFormatLine = "# plumb survey 2";
 // Version 1 (no toolface, no random and total sigmas, no reference field columns) is still read.
 inline constexpr const char* kSurveyFormatLineV1 = "# plumb survey 1";
 
-void write_survey_header(std::ostream& out, const SurveyOptions& options);
+// Without a given section azimuth the header says `section_azimuth_deg A (closure)`, A the closure
+// azimuth of the survey's last station (`closure_azimuth_deg`).
+void write_survey_header(std::ostream& out, const SurveyOptions& options, double closure_azimuth_deg = 0);
 void write_survey_row(std::ostream& out, const SurveyRow& row);
 std::string survey_row_line(const SurveyRow& row);  // with its '\n'
 std::string survey_text(const Survey& survey);     // header and every row

@@ -68,7 +68,9 @@ struct SurveyOptions {
   // The ISCWSA model's first station: a tie-in point (false) or a survey whose errors tilt the
   // half course below it (iscwsa::Field::first_station_surveyed).
   bool first_station_surveyed = false;
-  double section_azimuth_deg = 0;      // in the survey's reference
+  // In the survey's reference; none: the closure azimuth of the last station (the well's direction),
+  // every row's vertical section following it as stations are added.
+  std::optional<double> section_azimuth_deg;
   Eigen::Vector3d tie_in = Eigen::Vector3d::Zero();  // position of the first station (north, east, tvd)
 };
 
@@ -100,6 +102,10 @@ class Survey {
                                           double azimuth_deg) const;
   const SurveyOptions& options() const { return options_; }
   std::size_t failed_qc() const { return failed_qc_; }
+  // The vertical section's azimuth in use: the one given, else the last station's closure azimuth
+  // (0 before a station has left the reference point).
+  double section_azimuth_deg() const;
+  bool section_azimuth_is_closure() const { return !options_.section_azimuth_deg.has_value(); }
 
  private:
   SurveyOptions options_;
