@@ -38,6 +38,8 @@ expect_failure() {
   if ! printf '%s' "$err" | grep -qE -- "$pattern"; then fail "$what: stderr '$err' lacks /$pattern/"; return; fi
   pass "$what: $(printf '%s' "$err" | tail -1)"
 }
+# A TCP port on loopback free now (the test's own listeners take it next).
+free_port() { python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'; }
 finish() { if [ $fails -ne 0 ]; then echo "$fails check(s) failed"; exit 1; fi; echo "all checks passed"; }
 
 # expect_usage "description" "stderr pattern" command...: exit status 2 and one stderr line.

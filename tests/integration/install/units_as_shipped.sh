@@ -17,7 +17,6 @@ ln -s "$bin" "$root/opt/plumb/bin"
 cp "$src"/deploy/systemd/env/*.env "$root/etc/plumb/"
 sed -i "s/^PLUMB_DOMAIN_ID=.*/PLUMB_DOMAIN_ID=$PLUMB_DOMAIN_ID/" "$root/etc/plumb/plumb.env"
 port_taken() { python3 -c 'import socket, sys; s = socket.socket(); s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1); s.bind(("", int(sys.argv[1])))' "$1" 2> /dev/null && return 1 || return 0; }
-free_port() { python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'; }
 for pair in "display.env --port" "display.env --foxglove-port" "wits.env --listen"; do
   set -- $pair
   port=$(sed -nE "s/.*$2 ([0-9]+).*/\1/p" "$root/etc/plumb/$1")

@@ -14,7 +14,6 @@ here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../wait.sh"
 start_work_with_programs
 export PATH=$bin:$PATH
-free_port() { python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'; }
 pid_of() { sed -nE "s/^\[launch\] started $1 \(pid ([0-9]+)\).*/\1/p" "$2" | tail -1; }
 alive() { kill -0 "$1" 2>/dev/null; }
 

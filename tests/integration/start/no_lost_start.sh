@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# No lost start (issue 36, item 6): a reader started FIRST gets the whole of a fast replay and the
+# No lost start: a reader started FIRST gets the whole of a fast replay and the
 # first depth of a rig's feed, with the publishers' default bounded wait for a reader. Before it, a
 # replay at --rate max published before discovery had matched the echo (nothing, or sample 256 of
 # 500 on), and plumb-wits lost the first depths of a feed that was already sending.
@@ -19,7 +19,6 @@ here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../wait.sh"
 start_work_with_programs
 export PATH=$bin:$PATH
-free_port() { python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'; }
 
 if [ "$what" = bridge ]; then
   n=500

@@ -15,7 +15,6 @@ here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../wait.sh"
 start_work_with_programs
 export PATH=$bin:$PATH
-free_port() { python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'; }
 frames=30
 faults=(--count $frames --interval 0.03 --garbage-every 7 --cut-frame 11 --drop-after 19 --stop-every 8 --stop-frames 3)
 expected=$((3 * (frames - 1)))

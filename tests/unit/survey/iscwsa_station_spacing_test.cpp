@@ -1,5 +1,5 @@
-// Why the random inclination sigma of one MWD tool code grows as stations come closer (issue 36:
-// 0.21 deg at 30 m against 0.55 deg at 1 m): it is the model, not a bug. Revision 5's random
+// Why the random inclination sigma of one MWD tool code grows as stations come closer (a user's
+// report: 0.21 deg at 30 m against 0.55 deg at 1 m): it is the model, not a bug. Revision 5's random
 // misalignments XYM3E and XYM4E (0.3 deg each in the MWD code) are weighted up by
 // max(1, sqrt(10 m / course)), so that the random position variance they add over a length stops
 // shrinking once stations are closer than 10 m (independent errors per station would otherwise
