@@ -6,6 +6,8 @@
 #include <chrono>
 #include <iostream>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "addresses.hpp"
 #include "dds_feed.hpp"
@@ -47,40 +49,61 @@ int run(const Options& o) {
   }
   auto conn = components::connect(o.transport, "plumb-display");
   DdsFeed feed(*conn.participant, hub);
-  // The servers start after DDS: a port that is taken ends the program before anyone connects to it.
-  WebServer server(o.web, hub);
+  // The servers start after DDS. One whose port is taken is said, and the other serves alone (a
+  // display that still shows something beats none on a rig); with neither, the program ends.
+  std::vector<std::string> refusals;
+  const auto refused = [&](const std::exception& e) { refusals.emplace_back(e.what()); };
+  std::optional<WebServer> server;
+  try {
+    server.emplace(o.web, hub);
+  } catch (const std::runtime_error& e) {
+    refused(e);
+  }
   std::optional<FoxgloveServer> foxglove_server;
   std::optional<FoxgloveFeed> foxglove_feed;
   if (foxglove_hub) {
     FoxgloveServerOptions fs = o.foxglove;
     fs.bind = o.web.bind;
-    foxglove_server.emplace(fs, *foxglove_hub);
-    foxglove_feed.emplace(*conn.participant, *foxglove_hub);
+    try {
+      foxglove_server.emplace(fs, *foxglove_hub);
+      foxglove_feed.emplace(*conn.participant, *foxglove_hub);
+    } catch (const std::runtime_error& e) {
+      refused(e);
+    }
+  }
+  if (!server && !foxglove_server) throw std::runtime_error(refusals.front());
+  std::string not_served;
+  for (const std::string& r : refusals) {
+    std::cerr << "plumb-display: " << r << "; serving the rest" << std::endl;
+    not_served += (not_served.empty() ? "" : "; ") + r;
   }
   components::install_stop_handler();
   components::StatusReporter status(*conn.participant, "plumb-display");
-  // Addresses a browser can open: --bind 0.0.0.0 is every interface, not an address.
-  const std::vector<std::string> addresses = page_addresses(o.web.bind, server.port());
-  std::cout << "plumb-display: serving " << addresses.front() << " (domain " << conn.options.domain_id << ", "
-            << conn.transport->name()
-            << (o.web.bind == "127.0.0.1" ? "; this computer only: --bind 0.0.0.0 to serve the network" : "") << ")";
+  if (server) {
+    // Addresses a browser can open: --bind 0.0.0.0 is every interface, not an address.
+    const std::vector<std::string> addresses = page_addresses(o.web.bind, server->port());
+    std::cout << "plumb-display: serving " << addresses.front() << " (domain " << conn.options.domain_id << ", "
+              << conn.transport->name()
+              << (o.web.bind == "127.0.0.1" ? "; this computer only: --bind 0.0.0.0 to serve the network" : "") << ")";
+  } else {
+    std::cout << "plumb-display: the page is not served (domain " << conn.options.domain_id << ", "
+              << conn.transport->name() << ")";
+  }
   if (foxglove_server) {
     std::cout << "; Foxglove on " << page_addresses(o.web.bind, foxglove_server->port(), "ws").front();
   } else {
-    std::cout << "; Foxglove off";
+    std::cout << (foxglove_hub ? "; Foxglove not served" : "; Foxglove off");
   }
   std::cout << std::endl;
-  if (addresses.size() > 1) {
-    std::cout << "plumb-display: on every interface:";
-    for (std::size_t i = 1; i < addresses.size(); ++i) std::cout << (i == 1 ? " " : ", ") << addresses[i];
+  const auto say_every_interface = [&](const char* what, int port, const char* scheme) {
+    const auto all = page_addresses(o.web.bind, port, scheme);
+    if (all.size() < 2) return;
+    std::cout << "plumb-display: " << what << "on every interface:";
+    for (std::size_t i = 1; i < all.size(); ++i) std::cout << (i == 1 ? " " : ", ") << all[i];
     std::cout << std::endl;
-    if (foxglove_server) {
-      const auto ws = page_addresses(o.web.bind, foxglove_server->port(), "ws");
-      std::cout << "plumb-display: Foxglove on every interface:";
-      for (std::size_t i = 1; i < ws.size(); ++i) std::cout << (i == 1 ? " " : ", ") << ws[i];
-      std::cout << std::endl;
-    }
-  }
+  };
+  if (server) say_every_interface("", server->port(), "http");
+  if (foxglove_server) say_every_interface("Foxglove ", foxglove_server->port(), "ws");
   const auto t0 = std::chrono::steady_clock::now();
   while (!components::g_stop) {
     if (o.duration_s > 0 && std::chrono::steady_clock::now() - t0 >= std::chrono::duration<double>(o.duration_s)) break;
@@ -95,9 +118,9 @@ int run(const Options& o) {
                                  {"clearances", s.clearances},
                                  {"depths", s.depths},
                                  {"topics", feed.topics()},
-                                 {"frames_sent", server.frames_sent()},
+                                 {"frames_sent", server ? server->frames_sent() : 0},
                                  {"dropped", s.dropped}};
-      if (foxglove_hub) {
+      if (foxglove_server) {
         const FoxgloveStats f = foxglove_hub->stats();
         counters.insert(counters.end(), {{"foxglove_clients", f.clients},
                                          {"foxglove_clients_total", f.clients_total},
@@ -108,7 +131,8 @@ int run(const Options& o) {
                                          {"foxglove_frames_sent", foxglove_server->frames_sent()},
                                          {"foxglove_refused", foxglove_server->refused()}});
       }
-      status.publish("running", counters);
+      // A server that could not listen keeps the display degraded, its reason on plumb/status.
+      status.publish(not_served.empty() ? "running" : "degraded", counters, not_served);
     }
   }
   return 0;

@@ -21,7 +21,15 @@ wait_for "$work/display.log" "serving http://127.0.0.1:[0-9]+/" 20 || { cat "$wo
 port=$(sed -nE 's|.*serving http://127\.0\.0\.1:([0-9]+)/.*|\1|p' "$work/display.log" | head -1)
 
 expect_error "a second display on the same port" "plumb-display: cannot serve on 127\.0\.0\.1:$port: Address already in use .*choose another --port" \
-  "$bin/plumb-display" --transport "$t" --port "$port" --foxglove-port 0
+  "$bin/plumb-display" --transport "$t" --port "$port" --no-foxglove
+# With Foxglove to serve, the page's port taken costs the page only: the display says so, serves
+# Foxglove, and runs (degraded) until its --duration.
+rc=0
+"$bin/plumb-display" --transport "$t" --port "$port" --foxglove-port 0 --duration 2 > "$work/half.out" 2> "$work/half.err" || rc=$?
+[ $rc -eq 0 ] && grep -qE "^plumb-display: cannot serve on 127\.0\.0\.1:$port: Address already in use .*; serving the rest$" "$work/half.err" &&
+  grep -qE "^plumb-display: the page is not served .*; Foxglove on ws://127\.0\.0\.1:[0-9]+/" "$work/half.out" &&
+  pass "the page's port taken: Foxglove served alone, said on stderr and stdout" ||
+  fail "the page's port taken, Foxglove free: exit $rc, $(cat "$work/half.err" "$work/half.out")"
 expect_error "an address that is not this computer's" "plumb-display: cannot serve on 192\.0\.2\.1:0: .*not an address of this computer" \
   "$bin/plumb-display" --transport "$t" --port 0 --foxglove-port 0 --bind 192.0.2.1
 expect_error "a --bind that is no address" "plumb-display: cannot serve on rig-floor:0: 'rig-floor' is not an IPv4 address" \

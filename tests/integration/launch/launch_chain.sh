@@ -4,7 +4,7 @@
 # output line carries its program's name; the run's end stops them all; the survey file holds the
 # run's seven stations. VARIANT: cyclonedds or fastdds (PLUMB_TRANSPORT for every program), mixed
 # (the file with the estimator host moved to Fast DDS, the rest on Cyclone DDS), or port-taken
-# (Cyclone DDS, the display's port, given as port:=P, held by another program: the display fails
+# (Cyclone DDS, the display's ports, given as port:=P foxglove_port:=Q, held by another program: the display fails
 # alone, the survey still gets its stations, and plumb launch's exit status 1 says what failed).
 # usage: launch_chain.sh LAUNCH_FILE BIN_DIR VARIANT DOMAIN
 set -uo pipefail
@@ -23,16 +23,21 @@ if [ "$variant" = mixed ]; then
   launch_file=$work/mixed.yaml
 elif [ "$variant" = port-taken ]; then
   export PLUMB_TRANSPORT=cyclonedds
-  python3 -c 'import socket, time; s = socket.socket(); s.bind(("127.0.0.1", 0)); s.listen(); print(s.getsockname()[1], flush=True); time.sleep(600)' > port.txt &
+  # Both of the display's ports (the page's and Foxglove's): with one of them free it would serve
+  # that one alone (the rig-day test has that case).
+  python3 -c 'import socket, time
+held = [socket.socket() for _ in range(2)]
+for s in held: s.bind(("127.0.0.1", 0)); s.listen()
+print(*(s.getsockname()[1] for s in held), flush=True); time.sleep(600)' > port.txt &
   holder=$!
   trap 'kill $holder 2>/dev/null; rm -rf "$work"' EXIT
   for ((i = 0; i < 50; ++i)); do [ -s port.txt ] && break; sleep 0.1; done
-  port=$(cat port.txt)
+  read -r port foxglove_port < port.txt
 else
   export PLUMB_TRANSPORT=$variant
 fi
 start=$(date +%s)
-timeout 180 plumb launch "$launch_file" ${port:+port:=$port} > out.txt 2> err.txt
+timeout 180 plumb launch "$launch_file" ${port:+port:=$port} ${foxglove_port:+foxglove_port:=$foxglove_port} > out.txt 2> err.txt
 rc=$?
 echo "plumb launch: exit $rc after $(( $(date +%s) - start )) s"
 if [ "$variant" = port-taken ]; then
