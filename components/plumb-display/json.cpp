@@ -83,6 +83,7 @@ std::string station_json(const topics::SurveyStation& s, const std::string& key)
   j["tvd"] = json_number(s.tvd_m, 2);
   j["dls"] = json_number(s.dls_deg_per_30m, 2);
   j["vs"] = json_number(s.vertical_section_m, 2);
+  j["saz"] = json_number(s.section_azimuth_deg, 3);
   j["maj"] = json_number(s.ellipse_major_sd_m, 3);
   j["mnr"] = json_number(s.ellipse_minor_sd_m, 3);
   j["maz"] = json_number(s.ellipse_major_azimuth_deg, 1);

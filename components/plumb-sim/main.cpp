@@ -46,6 +46,7 @@ struct OutputOptions {
   SerialSinkOptions serial;
   double rig_clock_offset_s = 0;
   double rig_clock_drift_ppm = 0;
+  std::string wits_to;
 };
 
 void add_output_options(CLI::App& app, OutputOptions& o) {
@@ -76,6 +77,11 @@ void add_output_options(CLI::App& app, OutputOptions& o) {
                  "and running this many parts per million fast (negative: slow) from sensor time 0")
       ->capture_default_str()
       ->check(CLI::Range(-1000.0, 1000.0));
+  app.add_option("--wits", o.wits_to,
+                 "drilling: play the rig too: its depth as a WITS level-0 feed (a frame a second) to plumb-wits "
+                 "--listen at HOST:PORT instead of plumb/depth; plumb-wits stamps it with this computer's clock, and "
+                 "the sensors are stamped on the tool's, --rig-clock-offset behind it and --rig-clock-drift-ppm slow "
+                 "(real time only)");
   app.add_flag("--loop", o.loop,
                "keep simulating past the duration until Ctrl-C (the platform keeps turning; a drilling tool or a "
                "walking foot stays still where its run ended)");
@@ -98,6 +104,7 @@ std::unique_ptr<Sink> make_sink(const OutputOptions& o, const std::string& tool_
   d.tool_id = tool_id;
   d.rig_clock_offset_s = o.rig_clock_offset_s;
   d.rig_clock_drift = o.rig_clock_drift_ppm * 1e-6;
+  d.wits_to = o.wits_to;
   return std::make_unique<DdsSink>(d);
 }
 
@@ -157,6 +164,9 @@ int simulate(Simulator& simulator, const std::string& description, double rate_h
   const double speed = components::parse_rate_option(output_options.rate);
   if (output_options.loop && !output_options.csv_dir.empty())
     throw std::invalid_argument("--loop cannot be used with --csv (the files would never end)");
+  if (!output_options.wits_to.empty() && (speed != 1 || !output_options.csv_dir.empty() || !output_options.serial.path.empty()))
+    throw std::invalid_argument("--wits plays the rig in real time on DDS: plumb-wits stamps its frames with this "
+                                "computer's clock (no --rate other than realtime, no --csv or --serial)");
   if (simulator.sample_count() == 0 && !output_options.loop)
     throw std::invalid_argument("the scenario has no samples (duration x rate < 1)");
 
@@ -205,6 +215,8 @@ int run_main(int argc, char** argv) {
       return simulate(simulator, sim::describe(scenario), scenario.sample_rate_hz, scenario.tool_id, columns,
                       output_options);
     }
+    if (!output_options.wits_to.empty() && !is_drilling(scenario_options))
+      throw std::invalid_argument("--wits needs a drilling run (--scenario drilling or drilling-survey): only they have a rig");
     if (is_walk(scenario_options)) {
       const sim::WalkScenario scenario = make_walk_scenario(app, scenario_options);
       sim::WalkSimulator simulator(scenario);

@@ -128,7 +128,7 @@ class LiveSurvey {
   // the whole survey from it. The detector goes on after the last of them.
   void republish_resumed() {
     for (const auto& row : result_.rows()) {
-      writer_.write(to_topic(row));
+      writer_.write(to_topic(row, result_.section_azimuth_deg()));
       if (!o_.quiet) print_row(row, "resumed station");
       publish_clearance(row);
     }
@@ -156,7 +156,7 @@ class LiveSurvey {
       }
       const survey::SurveyRow& row = result_.add(s);
       store_.append(row);  // on disk (fsync'ed) before anyone is told
-      writer_.write(to_topic(row));
+      writer_.write(to_topic(row, result_.section_azimuth_deg()));
       if (!o_.quiet) print_row(row, "station");
       const auto level = clearance_.level();
       publish_clearance(row);

@@ -8,7 +8,7 @@ namespace plumb::survey_component {
 
 using components::bounded;
 
-topics::SurveyStation to_topic(const survey::SurveyRow& r) {
+topics::SurveyStation to_topic(const survey::SurveyRow& r, double section_azimuth_deg) {
   topics::SurveyStation m;
   const auto& s = r.station;
   m.tool_id = bounded(s.tool_id, topics::SurveyStation::kToolIdMax);
@@ -52,6 +52,7 @@ topics::SurveyStation to_topic(const survey::SurveyRow& r) {
   m.inclination_total_sd_deg = r.inclination_total_sd_deg;
   m.azimuth_total_sd_deg = r.azimuth_total_sd_deg;
   m.error_model = bounded(r.error_model, topics::SurveyStation::kErrorModelMax);
+  m.section_azimuth_deg = section_azimuth_deg;
   return m;
 }
 

@@ -9,7 +9,8 @@
 
 namespace plumb::survey_component {
 
-topics::SurveyStation to_topic(const survey::SurveyRow& row);
+// section_azimuth_deg: the survey's when the row is published (Survey::section_azimuth_deg).
+topics::SurveyStation to_topic(const survey::SurveyRow& row, double section_azimuth_deg);
 // One reference station against one offset well, as plumb/clearance carries it.
 topics::Clearance to_topic(const ClearanceWatch::Pair& pair, const survey::SurveyRow& row,
                            const survey::ClearanceLevels& levels);

@@ -15,6 +15,7 @@
 #include "output.hpp"
 #include "plumb/components/cli.hpp"
 #include "plumb/wits/depth_decoder.hpp"
+#include "plumb/wits/frame_writer.hpp"
 #include "plumb/wits/link.hpp"
 
 namespace plumb::wits_send {
@@ -44,17 +45,6 @@ std::pair<double, double> depths(const Options& o, long long k) {
   return {k % cycle >= o.stop_every ? hole - o.pickup_m : hole, hole};
 }
 
-std::string frame_text(double bit, double hole, double unit_m) {
-  const std::time_t now = std::time(nullptr);
-  std::tm utc{};
-  ::gmtime_r(&now, &utc);
-  char text[160];
-  std::snprintf(text, sizeof text, "&&\r\n0105%02d%02d%02d\r\n0106%02d%02d%02d\r\n0108%.2f\r\n0110%.2f\r\n!!\r\n",
-                utc.tm_year % 100, utc.tm_mon + 1, utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec, bit / unit_m,
-                hole / unit_m);
-  return text;
-}
-
 std::unique_ptr<Output> make_output(const Options& o) {
   if (!o.connect.empty()) {
     std::string host;
@@ -78,7 +68,7 @@ int run(const Options& o) {
   long long k = 0, noise_lines = 0, noise_bytes = 0, cut_frames = 0, drops = 0;
   for (; !components::g_stop && (o.count == 0 || k < o.count); ++k) {
     const auto [bit, hole] = depths(o, k);
-    std::string text = frame_text(bit, hole, unit_m);
+    std::string text = wits::record01_frame(bit, hole, unit_m, std::time(nullptr));
     if (o.garbage_every > 0 && k % o.garbage_every == o.garbage_every - 1) {
       const std::string noise = "#~noise \x07\xff on the line";
       text = noise + "\r\n" + text;

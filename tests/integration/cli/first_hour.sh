@@ -32,6 +32,9 @@ expect_usage "C listener: another vendor" "Cyclone DDS only" "$bin/plumb-c-attit
 expect_usage "C listener: bad PLUMB_DOMAIN_ID" "PLUMB_DOMAIN_ID" env PLUMB_DOMAIN_ID=abc "$bin/plumb-c-attitude-listener"
 # Usage errors found after parsing are usage errors too; a runtime error stays exit status 1.
 expect_usage "plumb-sim: --csv and --serial" "^plumb-sim: give --csv or --serial, not both" "$bin/plumb-sim" --csv "$work/x" --serial "$work/y"
+expect_usage "plumb-sim --wits faster than real time" "^plumb-sim: --wits plays the rig in real time" "$bin/plumb-sim" --scenario drilling-survey --wits 127.0.0.1:5000 --rate x20
+expect_usage "plumb-sim --wits without a rig" "^plumb-sim: --wits needs a drilling run" "$bin/plumb-sim" --wits 127.0.0.1:5000
+expect_usage "plumb-sim --wits to no port" "^plumb-sim: --wits: port '99999' is not a number" "$bin/plumb-sim" --scenario drilling --wits 127.0.0.1:99999
 expect_usage "plumb-bridge: neither --device nor --replay" "^plumb-bridge: give either --device" "$bin/plumb-bridge"
 expect_usage "plumb topic pub: not FIELD=VALUE" "is not FIELD=VALUE" "$bin/plumb" topic pub plumb/attitude/x novalue --wait 0
 expect_usage "plumb-wits: no feed named" "^plumb-wits: say where the feed comes from" "$bin/plumb-wits"

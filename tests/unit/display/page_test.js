@@ -9,9 +9,9 @@ const page = fs.readFileSync(process.argv[2], "utf8");
 const begin = page.indexOf("// PURE BEGIN"), end = page.indexOf("// PURE END");
 assert(begin > 0 && end > begin, "the page marks its pure part");
 const {angleText, wrapsAround, LENGTH_UNITS, cardTitle, counterText, tickStep, nearestOffsets, stationSd,
-       TOOLFACE_TRACE_MAX_RPM, depthText} = new Function(page.slice(begin, end) +
+       TOOLFACE_TRACE_MAX_RPM, depthText, sectionAlong} = new Function(page.slice(begin, end) +
   "\nreturn {angleText, wrapsAround, LENGTH_UNITS, cardTitle, counterText, tickStep, nearestOffsets, stationSd, " +
-  "TOOLFACE_TRACE_MAX_RPM, depthText};")();
+  "TOOLFACE_TRACE_MAX_RPM, depthText, sectionAlong};")();
 
 let checks = 0;
 const check = (ok, what) => { assert(ok, what); ++checks; };
@@ -45,6 +45,16 @@ check(depthText({md: 1234.5, flags: 1}, 1, "m") === " · depth 1234.50 m (still)
 check(depthText({md: 304.8, flags: 3}, 1 / 0.3048, "ft") === " · depth 1000.00 ft (moving)", "feet, moving");
 check(depthText({md: 10, flags: 5}, 1, "m").endsWith("(in slips)"), "in slips");
 check(depthText({md: 10, flags: 0}, 1, "m") === "" && depthText(undefined, 1, "m") === "", "no valid depth: nothing");
+
+// The section along the newest station's direction: a station due east is 0 along north, its
+// whole distance along east, 10 cos 30 along 60; without a direction, the section it came with.
+{
+  const s = {n: 0, e: 10, vs: -4};
+  check(Math.abs(sectionAlong(s, 0)) < 1e-12 && Math.abs(sectionAlong(s, 90) - 10) < 1e-12, "north 0, east 10");
+  check(Math.abs(sectionAlong(s, 60) - 10 * Math.cos(Math.PI / 6)) < 1e-12, "along 60 deg: " + sectionAlong(s, 60));
+  check(Math.abs(sectionAlong({n: 3, e: 4}, Math.atan2(4, 3) * 180 / Math.PI) - 5) < 1e-12, "along its own closure: its distance");
+  check(sectionAlong(s, undefined) === -4 && sectionAlong(s, null) === -4, "no direction sent: the station's own");
+}
 
 // The history breaks its line where the angle wraps, not elsewhere.
 check(wrapsAround(359, 1) && wrapsAround(2, 358), "359 -> 1 and 2 -> 358 wrap");
