@@ -184,7 +184,6 @@ TEST(StrapdownFieldFamilies, StickSlipFollowedByTheAccelerometers) {
       x.flags |= flags::kNoMagnetometer;
     }
     p["initial_azimuth_deg"] = "30";  // the reference run's (no field to find it by)
-    p["still_detector"] = "magnitude";  // a drilling tool (auto takes a tool without a field for a foot)
   };
   const FamilyResult f = sweep("stick-slip, no magnetometers, tactical", sim::ImuGrade::tactical(), 100, family);
   expect_field_targets(f, "tactical", 0.2);

@@ -635,5 +635,42 @@ TEST(StrapdownInputs, RunThatCannotAlignSaysWhy) {
   }
 }
 
+// A gyro tool without magnetometers (its azimuth given): with a measured depth it is a drill string,
+// and still_detector=auto navigates it as one (the magnitude test, a drilling tool's states); with
+// neither field nor depth it is a foot or a hand (the GLRT), as before. Each is compared with the
+// detector named outright: the same rows, value for value.
+TEST(StrapdownInputs, AutoTakesAGyroToolWithDepthForADrillString) {
+  auto scenario = sim::DrillingScenario::reference(sim::ImuGrade::tactical(), 100, 3);
+  scenario.plan.segments.resize(4);
+  sim::DrillingSimulator simulator(scenario);
+  std::vector<Sample> with_depth = simulator.run();
+  for (Sample& x : with_depth) {
+    x.b.setZero();
+    x.flags |= flags::kNoMagnetometer;
+  }
+  std::vector<Sample> without_depth = with_depth;
+  for (Sample& x : without_depth) x.flags &= ~flags::kHasDepth;
+  const auto rows_with = [&](const std::vector<Sample>& samples, const char* detector) {
+    estimator::Parameters p = parameters_for(scenario);
+    p["initial_azimuth_deg"] = std::to_string(scenario.plan.azimuth_deg);
+    if (detector) p["still_detector"] = detector;
+    Navigator nav(parse_parameters(p));
+    return navigate_all(nav, samples);
+  };
+  const auto same_rows = [](const std::vector<Estimate>& a, const std::vector<Estimate>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t k = 0; k < a.size(); ++k)
+      if (a[k].valid != b[k].valid || a[k].inclination_deg != b[k].inclination_deg ||
+          a[k].azimuth_deg != b[k].azimuth_deg || a[k].toolface_sd_deg != b[k].toolface_sd_deg)
+        return false;
+    return true;
+  };
+  const auto auto_with_depth = rows_with(with_depth, nullptr);
+  ASSERT_GT(auto_with_depth.size(), 100u);
+  EXPECT_TRUE(same_rows(auto_with_depth, rows_with(with_depth, "magnitude")));
+  EXPECT_FALSE(same_rows(auto_with_depth, rows_with(with_depth, "glrt")));
+  EXPECT_TRUE(same_rows(rows_with(without_depth, nullptr), rows_with(without_depth, "glrt")));
+}
+
 }  // namespace
 }  // namespace plumb::strapdown::test

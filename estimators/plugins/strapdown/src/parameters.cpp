@@ -101,7 +101,7 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"gyro_bias_instability_dph", "0", "gyro bias wander reached over bias_time_s (deg/h, random walk)"},
       {"accel_bias_instability_mg", "0", "accelerometer bias wander reached over bias_time_s (mg, random walk)"},
       {"bias_time_s", "3600", "time over which the bias instabilities are reached (s)"},
-      {"still_detector", "auto", "stillness detector: magnitude (|f|, |B|, gyro quiet), glrt (f and w only) or auto (glrt without magnetometer)"},
+      {"still_detector", "auto", "stillness detector: magnitude (|f|, |B|, gyro quiet), glrt (f and w only) or auto (glrt for a tool with neither a magnetometer nor a measured depth before alignment: a foot or a hand; magnitude for a drilling tool)"},
       {"still_window_s", "0.05", "detector window (s; at least 3 samples)"},
       {"min_still_s", "0.5", "shortest still period used (s); 0.05 for foot-mounted or hand-held tools"},
       {"still_hysteresis", "1.5", "a still period ends when a test fails by this factor times its threshold"},

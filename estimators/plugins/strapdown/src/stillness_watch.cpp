@@ -202,6 +202,13 @@ void StillnessWatch::refresh_depth_tolerance() {
 // has not aligned after notice_after_s of data says why, once.
 void StillnessWatch::watch_before_alignment(const InputReading& in) {
   if (!first_t_) first_t_ = in.t;
+  // still_detector=auto: a tool without a field is a foot or a hand (the GLRT) unless it has a
+  // measured depth, which only a drill string has: a gyro-only drilling tool is one again.
+  if (in.depth && !depth_seen_ && config_.detector == DetectorChoice::Auto && mode() == StillnessConfig::Mode::Glrt) {
+    StillnessConfig sc = detector_.config();
+    sc.mode = StillnessConfig::Mode::Magnitude;
+    detector_.configure(sc);
+  }
   depth_seen_ = depth_seen_ || in.depth.has_value();
   noise_floor_.add(in.t, in.f, in.w, in.depth);
   if (noise_floor_.blocks() != floor_blocks_used_) adopt_noise_floor();
