@@ -2,12 +2,14 @@
 // offset well, station by station, by the ISCWSA separation rule (docs/surveys.md,
 // "Anti-collision"): per reference station the nearest offset, centre-to-centre distance, ellipse
 // separation, separation factor and its level; every pair optionally as CSV.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -27,6 +29,7 @@ namespace {
 struct ClearanceCommandOptions {
   std::string reference;
   components::ClearanceCliOptions clearance;
+  std::vector<std::string> sidetracks;  // offsets that kick off the reference at their first station
   survey::StationListModel model;
   std::string first_station = "surveyed";
   std::string csv, plot;
@@ -57,14 +60,35 @@ int run_clearance(ClearanceCommandOptions o) {
   const auto& rule = o.clearance.rule;
   const auto& levels = o.clearance.levels;
   o.model.first_station_surveyed = o.first_station == "surveyed";
-  const auto reference = survey::read_clearance_well(o.reference, components::clearance_well_name(o.reference),
-                                                     o.clearance.reference_radius_m, o.model);
-  std::vector<survey::ClearanceWellFile> offsets;
-  for (const auto& path : o.clearance.offsets) {
-    offsets.push_back(survey::read_clearance_well(path, components::clearance_well_name(path), o.clearance.offset_radius_m, o.model));
-    std::cerr << "plumb clearance: " << offsets.back().well.name << ": " << offsets.back().well.stations.size()
-              << " station(s), error model " << offsets.back().error_model << '\n';
-  }
+  if (o.clearance.offsets.empty() && o.sidetracks.empty())
+    throw std::invalid_argument("no offset well: give --offset FILE or --sidetrack FILE (each may be repeated)");
+  const std::string reference_name = components::clearance_well_name(o.reference);
+  const auto reference = survey::read_clearance_well(o.reference, reference_name, o.clearance.reference_radius_m, o.model);
+  // A sidetrack shares the reference's path down to its kick-off (its first station): against it,
+  // the reference counts its uncertainty from there too, and the path above is not scanned.
+  struct Offset {
+    survey::ClearanceWellFile file;
+    std::optional<survey::ClearanceWell> reference_below;
+  };
+  std::vector<Offset> offsets;
+  const auto add_offset = [&](const std::string& path, bool sidetrack) {
+    Offset off{survey::read_clearance_well(path, components::clearance_well_name(path), o.clearance.offset_radius_m, o.model),
+               std::nullopt};
+    std::string said = "plumb clearance: " + off.file.well.name + ": " + std::to_string(off.file.well.stations.size()) +
+                       " station(s), error model " + off.file.error_model;
+    if (sidetrack) {
+      const double kick_off = off.file.well.stations.front().md_m;
+      off.reference_below = survey::read_clearance_well_below(o.reference, reference_name,
+                                                              o.clearance.reference_radius_m, o.model, kick_off)
+                                .well;
+      said += "; a sidetrack of " + reference_name + " from MD " + components::clearance_number(kick_off, 2) +
+              " m (both wells' uncertainty from there)";
+    }
+    std::cerr << said << '\n';
+    offsets.push_back(std::move(off));
+  };
+  for (const auto& path : o.clearance.offsets) add_offset(path, false);
+  for (const auto& path : o.sidetracks) add_offset(path, true);
   std::string table = clearance_csv_header();
   std::cout << "# reference " << reference.well.name << " (" << reference.well.stations.size() << " stations, error model "
             << reference.error_model << "); k " << rule.k << ", sigma_pa " << rule.sigma_pa_m << " m, S_m "
@@ -73,19 +97,28 @@ int run_clearance(ClearanceCommandOptions o) {
   std::cout << "reference_md_m  nearest_offset  offset_md_m  centre_to_centre_m  ellipse_separation_m  separation_factor  level\n";
   double min_sf = std::numeric_limits<double>::infinity();
   std::string min_where;
-  int warnings = 0, alarms = 0;
+  int warnings = 0, alarms = 0, scanned = 0;
   for (const auto& station : reference.well.stations) {
     // The offset this station is least clear of: the smallest separation factor.
     survey::StationClearance worst;
     std::string worst_name;
     for (const auto& off : offsets) {
-      const auto c = survey::station_clearance(station, reference.well.radius_m, off.well, rule);
-      table += clearance_csv_row(c, off.well.name, levels);
+      const survey::WellPoint* seen_from = &station;
+      if (off.reference_below) {
+        const auto& below = off.reference_below->stations;
+        const auto same = std::find_if(below.begin(), below.end(), [&](const auto& p) { return p.md_m == station.md_m; });
+        if (same == below.end()) continue;  // above the kick-off: the wells' common path
+        seen_from = &*same;
+      }
+      const auto c = survey::station_clearance(*seen_from, reference.well.radius_m, off.file.well, rule);
+      table += clearance_csv_row(c, off.file.well.name, levels);
       if (worst_name.empty() || c.separation_factor < worst.separation_factor) {
         worst = c;
-        worst_name = off.well.name;
+        worst_name = off.file.well.name;
       }
     }
+    if (worst_name.empty()) continue;
+    ++scanned;
     const auto level = survey::clearance_level(worst.separation_factor, levels);
     warnings += level == survey::ClearanceLevel::Warning;
     alarms += level == survey::ClearanceLevel::Alarm;
@@ -106,7 +139,7 @@ int run_clearance(ClearanceCommandOptions o) {
     run_plot("clearance", csv, o.plot);
     if (o.csv.empty()) std::filesystem::remove(csv);
   }
-  std::cerr << "plumb clearance: " << reference.well.stations.size() << " reference station(s) against "
+  std::cerr << "plumb clearance: " << scanned << " reference station(s) against "
             << offsets.size() << " offset well(s): smallest SF " << components::clearance_number(min_sf, 3) << " (" << min_where
             << "); " << warnings << " station(s) at warning, " << alarms << " at alarm\n";
   return 0;
@@ -123,7 +156,12 @@ void add_clearance_verb(CLI::App& app, Verbs& verbs) {
                                                   "north_m,east_m,tvd_m place it)")
       ->required()
       ->check(CLI::ExistingFile);
-  components::add_clearance_options(*cmd, o->clearance, /*offsets_required=*/true);
+  components::add_clearance_options(*cmd, o->clearance, /*offsets_required=*/false);
+  cmd->add_option("--sidetrack", o->sidetracks,
+                  "an offset well that kicks off the reference at its first station (repeat for each): against it "
+                  "both wells' uncertainty counts from the kick-off, the reference (a station list) surveyed again from "
+                  "there, and the common path above is not scanned")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--error-model", o->model.error_model, "error model of station-list wells: a built-in tool code "
                                                          "(MWD, MWD:rev4, ...) or a tool code file")
       ->capture_default_str();

@@ -20,6 +20,8 @@
 #include "plumb/core/attitude.hpp"
 #include "plumb/csv/files.hpp"
 #include "plumb/survey/clearance.hpp"
+#include "plumb/survey/clearance_well_file.hpp"
+#include "plumb/survey/closest_approach.hpp"
 #include "plumb/survey/survey.hpp"
 
 namespace plumb::survey {
@@ -187,6 +189,37 @@ TEST(IscwsaClearance, WellsMatchTheListings) {
       EXPECT_NEAR(std::sqrt(c(2, 2)), e.at("sigma_a_m"), 1e-3) << where;
     }
   }
+}
+
+// A sidetrack's view of its parent, from the parent's station list: surveyed again from the
+// kick-off. At a station, the stations below keep their places (the path is the parent's) and the
+// uncertainty restarts (smaller at every station below than the whole well's); between stations,
+// the first point is the parent's course at that depth. A survey file cannot be surveyed again.
+TEST(IscwsaClearance, TheParentSeenFromASidetrackCountsFromTheKickOff) {
+  const std::string parent = kSet + "/reference.wellpath.csv";
+  StationListModel model;
+  model.error_model = "MWD:rev4";
+  model.dip_deg = 70;
+  const ClearanceWell whole = read_clearance_well(parent, "reference", 0.4, model).well;
+  for (const double kick_off : {900.0, 915.0}) {
+    const ClearanceWell below = read_clearance_well_below(parent, "reference", 0.4, model, kick_off).well;
+    ASSERT_DOUBLE_EQ(below.stations.front().md_m, kick_off);
+    const auto after = std::find_if(whole.stations.begin(), whole.stations.end(),
+                                    [&](const WellPoint& p) { return p.md_m >= kick_off; });
+    const std::size_t k = static_cast<std::size_t>(after - whole.stations.begin());
+    const WellPoint on_course = after->md_m == kick_off ? *after : interpolate_course(whole.stations[k - 1], *after, kick_off);
+    EXPECT_LT((below.stations.front().position - on_course.position).norm(), 1e-9) << kick_off;
+    ASSERT_EQ(below.stations.size(), whole.stations.size() - k + (after->md_m == kick_off ? 0 : 1)) << kick_off;
+    for (std::size_t j = 1; j < below.stations.size(); ++j) {
+      const WellPoint& b = below.stations[j];
+      const WellPoint& w = whole.stations[k + j - (after->md_m == kick_off ? 0 : 1)];
+      ASSERT_DOUBLE_EQ(b.md_m, w.md_m);
+      EXPECT_LT((b.position - w.position).norm(), 1e-6) << kick_off << " at " << b.md_m;
+      EXPECT_LT(b.covariance.trace(), w.covariance.trace()) << kick_off << " at " << b.md_m;
+    }
+  }
+  EXPECT_THROW(read_clearance_well_below(parent, "reference", 0.4, model, whole.stations.back().md_m + 10),
+               std::runtime_error);
 }
 
 }  // namespace

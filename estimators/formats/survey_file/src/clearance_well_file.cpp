@@ -1,6 +1,7 @@
 #include "plumb/survey/clearance_well_file.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "plumb/core/number.hpp"
+#include "plumb/survey/closest_approach.hpp"
 #include "plumb/csv/files.hpp"
 #include "plumb/survey/survey_file.hpp"
 #include "plumb/survey/survey_inputs.hpp"
@@ -104,13 +106,16 @@ iscwsa::ToolCode clearance_tool_code(const std::string& name) {
   return iscwsa::read_tool_code(in, name);
 }
 
-ClearanceWellFile clearance_from_station_list(const std::string& path, const std::string& name, double radius_m,
-                                              const StationListModel& model) {
-  const ClearanceCsv t = clearance_read_csv(path);
-  for (const char* c : {"north_m", "east_m", "tvd_m"})
-    if (!t.columns.count(c))
-      throw std::runtime_error(path + ": no column '" + std::string(c) +
-                               "': a station list's first row places the well (north_m, east_m, tvd_m)");
+std::string clearance_md_text(double md_m) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", md_m);
+  return text;
+}
+
+// A station list surveyed from `tie_in` (north, east, TVD) through the model.
+ClearanceWellFile clearance_surveyed(const std::vector<Station>& stations, const Eigen::Vector3d& tie_in,
+                                     const std::string& path, const std::string& name, double radius_m,
+                                     const StationListModel& model) {
   SurveyOptions o;
   o.reference = AzimuthReference::Grid;  // the azimuths as listed: no correction
   o.north.declination_known = o.north.convergence_known = true;
@@ -121,15 +126,36 @@ ClearanceWellFile clearance_from_station_list(const std::string& path, const std
   o.tool_code = clearance_tool_code(model.error_model);
   o.latitude_deg = model.latitude_deg;
   o.first_station_surveyed = model.first_station_surveyed;
-  o.tie_in = {clearance_number(t, 0, "north_m", path), clearance_number(t, 0, "east_m", path),
-              clearance_number(t, 0, "tvd_m", path)};
+  o.tie_in = tie_in;
   Survey survey(o);
   try {
-    for (const Station& s : read_station_csv(path)) survey.add(s);
+    for (const Station& s : stations) survey.add(s);
   } catch (const StationError& e) {
     throw std::runtime_error(path + ": " + e.what());
   }
   return {clearance_well(survey, name, radius_m), "as listed", o.tool_code->name};
+}
+
+// The station list's stations and the position its first row gives.
+std::pair<std::vector<Station>, Eigen::Vector3d> clearance_station_list(const std::string& path) {
+  const ClearanceCsv t = clearance_read_csv(path);
+  for (const char* c : {"north_m", "east_m", "tvd_m"})
+    if (!t.columns.count(c))
+      throw std::runtime_error(path + ": no column '" + std::string(c) +
+                               "': a station list's first row places the well (north_m, east_m, tvd_m)");
+  const Eigen::Vector3d tie_in{clearance_number(t, 0, "north_m", path), clearance_number(t, 0, "east_m", path),
+                               clearance_number(t, 0, "tvd_m", path)};
+  try {
+    return {read_station_csv(path), tie_in};
+  } catch (const StationError& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+}
+
+ClearanceWellFile clearance_from_station_list(const std::string& path, const std::string& name, double radius_m,
+                                              const StationListModel& model) {
+  const auto [stations, tie_in] = clearance_station_list(path);
+  return clearance_surveyed(stations, tie_in, path, name, radius_m, model);
 }
 
 }  // namespace
@@ -138,6 +164,35 @@ ClearanceWellFile read_clearance_well(const std::string& path, const std::string
                                       const StationListModel& model) {
   if (clearance_is_survey_file(path)) return clearance_from_survey_file(path, name, radius_m);
   return clearance_from_station_list(path, name, radius_m, model);
+}
+
+ClearanceWellFile read_clearance_well_below(const std::string& path, const std::string& name, double radius_m,
+                                            const StationListModel& model, double kick_off_md_m) {
+  if (clearance_is_survey_file(path))
+    throw std::runtime_error(path + ": a survey file cannot be surveyed again from a sidetrack's kick-off (its error "
+                                    "terms are not in it): give the well as a station list");
+  const auto [stations, tie_in] = clearance_station_list(path);
+  // The whole well first: where the kick-off's point is, and its direction there.
+  const ClearanceWell whole = clearance_surveyed(stations, tie_in, path, name, radius_m, model).well;
+  const auto& p = whole.stations;
+  if (!(kick_off_md_m >= p.front().md_m && kick_off_md_m < p.back().md_m))
+    throw std::runtime_error(path + ": the sidetrack's kick-off at MD " + clearance_md_text(kick_off_md_m) +
+                             " m is not within the well (MD " + clearance_md_text(p.front().md_m) + " to " +
+                             clearance_md_text(p.back().md_m) + " m)");
+  std::size_t k = 0;
+  while (p[k + 1].md_m <= kick_off_md_m) ++k;
+  const WellPoint at = p[k].md_m == kick_off_md_m ? p[k] : interpolate_course(p[k], p[k + 1], kick_off_md_m);
+  std::vector<Station> below;
+  Station first = stations[k];
+  first.md_m = kick_off_md_m;
+  first.inclination_deg = at.inclination_deg;
+  first.magnetic_azimuth_deg = at.azimuth_deg;
+  below.push_back(first);
+  for (const Station& s : stations)
+    if (s.md_m > kick_off_md_m) below.push_back(s);
+  StationListModel from_kick_off = model;
+  from_kick_off.first_station_surveyed = true;
+  return clearance_surveyed(below, at.position, path, name, radius_m, from_kick_off);
 }
 
 }  // namespace plumb::survey

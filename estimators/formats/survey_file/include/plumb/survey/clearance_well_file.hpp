@@ -34,4 +34,12 @@ struct ClearanceWellFile {
 ClearanceWellFile read_clearance_well(const std::string& path, const std::string& name, double radius_m,
                                       const StationListModel& model);
 
+// The same well seen from a sidetrack that kicks off it at `kick_off_md_m`: the part below, surveyed
+// again from there (the point on the course at that depth, tied in at its own position: the two
+// wells' uncertainty counts from their common point, ISCWSA's rule for a sidetrack). Only a station
+// list can be surveyed again (a survey file's error terms are not in it): std::runtime_error for a
+// survey file, and for a kick-off outside the well.
+ClearanceWellFile read_clearance_well_below(const std::string& path, const std::string& name, double radius_m,
+                                            const StationListModel& model, double kick_off_md_m);
+
 }  // namespace plumb::survey
