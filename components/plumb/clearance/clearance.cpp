@@ -39,7 +39,7 @@ std::string clearance_csv_header() {
   return "reference_md_m,reference_north_m,reference_east_m,reference_tvd_m,offset,offset_md_m,offset_north_m,"
          "offset_east_m,offset_tvd_m,centre_to_centre_m,horizontal_bearing_deg,high_side_bearing_deg,"
          "reference_sigma_m,offset_sigma_m,sigma_s_m,masd_m,ellipse_separation_m,separation_factor,level,warning_sf,"
-         "alarm_sf\n";
+         "alarm_sf,reference_cov_nn,reference_cov_ne,reference_cov_ee,offset_cov_nn,offset_cov_ne,offset_cov_ee\n";
 }
 
 std::string clearance_csv_row(const survey::StationClearance& c, const std::string& offset, const survey::ClearanceLevels& l) {
@@ -51,7 +51,11 @@ std::string clearance_csv_row(const survey::StationClearance& c, const std::stri
     << c.horizontal_bearing_deg << ',' << c.high_side_bearing_deg << ',' << c.reference_sigma_m << ','
     << c.offset_sigma_m << ',' << c.sigma_s_m << ',' << c.masd_m << ',' << c.ellipse_separation_m << ','
     << c.separation_factor << ',' << survey::to_string(survey::clearance_level(c.separation_factor, l)) << ','
-    << l.warning_sf << ',' << l.alarm_sf << '\n';
+    << l.warning_sf << ',' << l.alarm_sf;
+  // Each well's horizontal covariance there (north, east; m^2): the plan's ellipses.
+  for (const Eigen::Matrix3d* p : {&c.reference.covariance, &c.offset.covariance})
+    o << ',' << (*p)(0, 0) << ',' << (*p)(0, 1) << ',' << (*p)(1, 1);
+  o << '\n';
   return o.str();
 }
 
