@@ -63,7 +63,7 @@ for name in estimator survey display sim; do
     pass "$name started, its lines prefixed [$name]" || fail "$name: no started line or no prefixed output"
 done
 grep -q "^\[display\] .*serving http://127.0.0.1:8080/" out.txt err.txt && pass "the display served its page" ||
-  fail "the display did not say where it serves"
+  fail "the display did not say where it serves: $(grep -h '^\[display\]' out.txt err.txt | head -5)"
 grep -q "^\[launch\] sim ended (on_exit: shutdown): stopping every program" out.txt &&
   pass "the end of the run stopped the others" || fail "no stop after the run: $(grep '^\[launch\]' out.txt)"
 if [ "$variant" = mixed ]; then
