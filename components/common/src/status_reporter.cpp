@@ -36,6 +36,10 @@ StatusReporter::StatusReporter(transport::Participant& participant, std::string 
 
 void StatusReporter::publish(const std::string& state, const CounterList& counters, const std::string& last_error) {
   writer_.write(make_status(component_, state, counters, last_error));
+  // The last words: the participant goes right after them, and would take them along before a
+  // matched monitor got them. Bounded: a monitor killed a moment ago is still matched until its
+  // lease ends, and never answers.
+  if (state == "stopping" || state == "finished") writer_.wait_for_acknowledgments(kLastWordsWait);
 }
 
 bool StatusReporter::due() {

@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
       sensor.emplace(transport::make_reader<topics::SensorBatch>(
           participant, sensor_topic, reliable_sensor ? transport::Qos::reliable_stream() : transport::Qos::sensor_stream()));
     auto status = transport::make_reader<topics::ComponentStatus>(participant, transport::topic_names::kStatus,
-                                                                   transport::Qos::status());
+                                                                   transport::default_qos_for_topic(transport::topic_names::kStatus));
     std::optional<transport::Reader<topics::CalibrationCoefficients>> coefficients;
     if (calibration)
       coefficients.emplace(transport::make_reader<topics::CalibrationCoefficients>(

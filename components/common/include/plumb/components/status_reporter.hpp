@@ -23,9 +23,13 @@ topics::ComponentStatus make_status(const std::string& component, const std::str
 
 class StatusReporter {
  public:
+  static constexpr std::chrono::milliseconds kLastWordsWait{1000};
   StatusReporter(transport::Participant& participant, std::string component, double period_s = 1.0,
                  const std::string& topic = transport::topic_names::kStatus);
-  // Publishes now.
+  // Publishes now. "stopping" and "finished" are a component's last report: publish() then waits
+  // (at most kLastWordsWait) until every matched monitor acknowledged it, so that one matched a
+  // moment before the stop still gets it. The writer keeps its last report for monitors that join
+  // later (transient-local), as long as the component runs.
   void publish(const std::string& state, const CounterList& counters, const std::string& last_error = "");
   // True once per period: the caller then gathers its counters and publishes.
   bool due();
