@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <utility>
 
 #include "estimate_line.hpp"
 
@@ -134,7 +135,7 @@ void Host::open_resume_record() {
   const std::string dir = o_.state_dir.empty() ? default_state_dir() : o_.state_dir;
   const std::string path = dir + "/" + resume_file_name(conn_.options.domain_id, o_.input_topic, o_.tool_id);
   std::string why;
-  resume_ = ResumeFile::open(path, why);
+  if (auto file = ResumeFile::open(path, why)) resume_.emplace(std::move(*file));
   if (!resume_) {
     std::cerr << "plumb-estimator: no record of the sequence for a restart (" << why
               << "): samples lost while this host is down will not be counted" << std::endl;

@@ -26,7 +26,7 @@ constexpr int kResumeFilesPerName = 8;  // hosts on one computer reading the sam
 constexpr double kResumeClockSlackS = 2.0;
 constexpr double kResumeClockSlackFraction = 0.1;
 
-bool read_whole_file(int fd, std::string& out) {
+bool resume_read_whole_file(int fd, std::string& out) {
   char buffer[4096];
   for (;;) {
     const ssize_t n = ::read(fd, buffer, sizeof buffer);
@@ -122,7 +122,7 @@ std::optional<ResumeFile> ResumeFile::open(const std::string& path, std::string&
       continue;
     }
     std::string text;
-    if (!read_whole_file(fd, text)) {
+    if (!resume_read_whole_file(fd, text)) {
       why = "cannot read " + candidate + ": " + std::strerror(errno);
       ::close(fd);
       return std::nullopt;
