@@ -39,7 +39,7 @@ fi
 grep -qE "plumb-estimator +running" late_status.txt && pass "and the running host's" ||
   fail "late plumb status lacks plumb-estimator: $(cat late_status.txt)"
 "$bin/plumb" topic echo plumb/status --transport "$r" --count 2 --timeout 10 > late_echo.txt 2>&1 &&
-  grep -q "state: finished" late_echo.txt && pass "a late 'plumb topic echo plumb/status' gets it too" ||
+  grep -q "state: \"finished\"" late_echo.txt && pass "a late 'plumb topic echo plumb/status' gets it too" ||
   fail "late echo: $(cat late_echo.txt)"
 
 # The host stopped with SIGINT: the monitor matched all along gets its last words.
