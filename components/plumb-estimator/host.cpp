@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 #include <utility>
 
 #include "estimate_line.hpp"
@@ -230,7 +231,10 @@ void Host::flush_idle() {
 int Host::summarise() {
   status_.publish("stopping", counters());
   std::cerr << "plumb-estimator: " << input_.batches() << " batches, " << input_.samples() << " samples ("
-            << input_.lost_samples() << " lost in transit, " << input_.silent_lost_samples() << " lost while silent)";
+            << input_.lost_samples() << " lost in transit, " << input_.silent_lost_samples() << " lost while silent"
+            << (input_.lost_while_down() > 0 ? ", " + std::to_string(input_.lost_while_down()) + " lost while this host was down"
+                                             : std::string())
+            << ")";
   for (const auto& [tool, runner] : runners_)
     for (const auto& slot : runner.slots())
       std::cerr << ", " << slot.name << (runners_.size() > 1 ? " (tool '" + tool + "')" : std::string()) << ": "

@@ -66,6 +66,7 @@ def check(cond, what):
     ok = ok and cond
 check(first == previous_last + 1 and last == new_first - 1, "the stderr line names the samples between the record and the first batch")
 check(on_status == last - first + 1, f"plumb/status says {on_status}, the stderr line {last - first + 1}")
+check(f", {on_status} lost while this host was down)" in log, "and so does the summary the host prints as it stops")
 check(abs(on_status - sent_while_down) <= batch, f"{on_status} within one batch of the {sent_while_down} the sim sent while the host was down")
 check(len(while_down) >= 2 and all(first <= b[1] and b[2] <= last for b in while_down),
       "every batch sent between the kill and the restart is among those counted")
