@@ -11,12 +11,15 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
+#include <utility>
 
 #include "estimate_line.hpp"
 
 #include "plumb/components/status_reporter.hpp"
 #include "plumb/estimator/loader.hpp"
 #include "publication.hpp"
+#include "resume_record.hpp"
 #include "subscription.hpp"
 #include "tool_streams.hpp"
 #include "truth_lookup.hpp"
@@ -68,6 +71,7 @@ class Host {
         status_(*conn_.participant, "plumb-estimator") {
     for (const auto& slot : first_runner_.slots()) publication_.add(slot.name, slot.estimator->info().uses_gyro);
     if (o.compare_truth) truth_ = std::make_unique<TruthLookup>(*conn_.participant, o.truth_topic);
+    open_resume_record();
   }
 
   int run();
@@ -100,6 +104,8 @@ class Host {
     }
   }
 
+  void open_resume_record();
+  void save_resume_record();
   components::CounterList counters() const;
   bool enough() const;
   void announce() const;
@@ -116,11 +122,37 @@ class Host {
   SensorSubscription input_;
   components::StatusReporter status_;
   std::unique_ptr<TruthLookup> truth_;
+  std::optional<ResumeFile> resume_;
+  bool said_resume_failure_ = false;
   std::string last_notice_;  // the latest thing a plugin had to say, on plumb/status too
   std::map<std::string, std::optional<double>> last_t_;  // tool id -> time of its last sample
   std::uint64_t new_runs_ = 0;
   bool checked_gyro_ = false;
 };
+
+// The previous instance's record: where each tool stood when it last took samples.
+void Host::open_resume_record() {
+  if (o_.no_state) return;
+  const std::string dir = o_.state_dir.empty() ? default_state_dir() : o_.state_dir;
+  const std::string path = dir + "/" + resume_file_name(conn_.options.domain_id, o_.input_topic, o_.tool_id);
+  std::string why;
+  if (auto file = ResumeFile::open(path, why)) resume_.emplace(std::move(*file));
+  if (!resume_) {
+    std::cerr << "plumb-estimator: no record of the sequence for a restart (" << why
+              << "): samples lost while this host is down will not be counted" << std::endl;
+    return;
+  }
+  input_.resume_after(resume_->previous());
+  std::cerr << "plumb-estimator: record of the last sequence taken: " << resume_->path()
+            << (resume_->previous().empty() ? " (new)" : " (the previous instance's, read)") << std::endl;
+}
+
+void Host::save_resume_record() {
+  if (!resume_ || resume_->save(input_.marks()) || said_resume_failure_) return;
+  std::cerr << "plumb-estimator: cannot write " << resume_->path()
+            << ": a restart of this host will not count what it lost while down" << std::endl;
+  said_resume_failure_ = true;
+}
 
 components::CounterList Host::counters() const {
   components::CounterList all = input_.counters();
@@ -199,7 +231,10 @@ void Host::flush_idle() {
 int Host::summarise() {
   status_.publish("stopping", counters());
   std::cerr << "plumb-estimator: " << input_.batches() << " batches, " << input_.samples() << " samples ("
-            << input_.lost_samples() << " lost in transit, " << input_.silent_lost_samples() << " lost while silent)";
+            << input_.lost_samples() << " lost in transit, " << input_.silent_lost_samples() << " lost while silent"
+            << (input_.lost_while_down() > 0 ? ", " + std::to_string(input_.lost_while_down()) + " lost while this host was down"
+                                             : std::string())
+            << ")";
   for (const auto& [tool, runner] : runners_)
     for (const auto& slot : runner.slots())
       std::cerr << ", " << slot.name << (runners_.size() > 1 ? " (tool '" + tool + "')" : std::string()) << ": "
@@ -234,6 +269,7 @@ int Host::run() {
     if (input_.take(chunks)) {
       for (auto& [tool, chunk] : chunks)
         if (!chunk.empty()) push_chunk(tool, chunk);
+      save_resume_record();
       pending = true;
       last_sample_time = Clock::now();
       next_silence_note_s = 5;

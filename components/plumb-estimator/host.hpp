@@ -25,6 +25,10 @@ struct HostOptions {
   bool quiet = false;
   bool compare_truth = false;  // print each estimate's error against the simulator's truth
   std::string truth_topic = transport::topic_names::kSimTruth;
+  // Where the host keeps the last sequence number it took of each tool, for its next instance
+  // (resume_record.hpp); "" is default_state_dir(). no_state: keep nothing, count nothing.
+  std::string state_dir;
+  bool no_state = false;
 };
 
 int run_host(const HostOptions& options);

@@ -34,6 +34,11 @@ int main(int argc, char** argv) {
   app.add_flag("--truth", o.compare_truth,
                "print each estimate's error against the simulator's truth (plumb-sim publishes it on plumb/sim/truth)");
   app.add_option("--truth-topic", o.truth_topic, "topic of the truth for --truth")->capture_default_str();
+  app.add_option("--state-dir", o.state_dir,
+                 "folder of the record of the last sequence number taken of each tool, which a restarted host reads "
+                 "to count the samples lost while it was down (default: $PLUMB_STATE_DIR, else "
+                 "$XDG_STATE_HOME/plumb, else ~/.local/state/plumb)");
+  app.add_flag("--no-state", o.no_state, "keep no record and count nothing lost while down");
   app.name("plumb-estimator");
   if (const int status = components::parse_command_line(app, argc, argv); status >= 0) return status;
   try {

@@ -1,5 +1,6 @@
 #include "subscription.hpp"
 
+#include <chrono>
 #include <iostream>
 
 #include "plumb/components/convert.hpp"
@@ -41,6 +42,45 @@ void SensorSubscription::note_stream_change(const std::string& tool, const Seque
               << "): a new source" << std::endl;
 }
 
+void SensorSubscription::resume_after(const ToolMarks& previous) {
+  previous_ = previous;
+  marks_ = previous;
+}
+
+// Said once per tool, at its first batch: how this instance's start relates to where the previous
+// one stopped.
+void SensorSubscription::count_loss_while_down(const std::string& tool, const topics::SensorBatch& batch,
+                                               std::int64_t wall_ns) {
+  const auto mark = previous_.find(tool);
+  if (mark == previous_.end()) return;
+  const std::uint64_t first = batch.samples.front().seq;
+  const DownLoss d = loss_while_down(mark->second, first, batch.samples.back().stamp_ns, wall_ns);
+  const std::string who = "plumb-estimator: tool '" + tool + "'";
+  const std::string since =
+      " (previous instance last seen at " + wall_time_text(mark->second.wall_ns) + ", sequence " +
+      std::to_string(mark->second.last_seq) + ")";
+  switch (d.kind) {
+    case DownLoss::Kind::Lost:
+      lost_while_down_ += d.count();
+      if (d.count() > 0)
+        std::cerr << "plumb-estimator: samples " << d.first << ".." << d.last << " of tool '" << tool
+                  << "' were lost while this host was down: " << d.count() << " samples" << since << std::endl;
+      else
+        std::cerr << who << " resumes at sequence " << first << ", right after its previous instance" << since
+                  << ": nothing lost while this host was down" << std::endl;
+      break;
+    case DownLoss::Kind::SourceRestarted:
+      std::cerr << who << " restarted its sequence while this host was down (now " << first << ")" << since
+                << ": a new source, nothing counted as lost while down" << std::endl;
+      break;
+    case DownLoss::Kind::ClocksDisagree:
+      std::cerr << who << ": its clock moved " << d.stream_s << " s and this computer's " << d.wall_s
+                << " s since the previous instance's record" << since
+                << ": another run or a replay, nothing counted as lost while down" << std::endl;
+      break;
+  }
+}
+
 bool SensorSubscription::route(const topics::SensorBatch& batch, ToolChunks& out) {
   SequenceAccount* account = streams_.route(batch.tool_id);
   if (!account) {
@@ -64,6 +104,11 @@ bool SensorSubscription::route(const topics::SensorBatch& batch, ToolChunks& out
     account->clock(components::ns_to_seconds(batch.samples.front().stamp_ns),
                    components::ns_to_seconds(batch.samples.back().stamp_ns));
     note_stream_change(batch.tool_id, *account, batch.samples.front().seq);
+    const std::int64_t wall_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                     std::chrono::system_clock::now().time_since_epoch())
+                                     .count();
+    if (!account->have_seq) count_loss_while_down(batch.tool_id, batch, wall_ns);
+    marks_[batch.tool_id] = {batch.samples.back().seq, batch.samples.back().stamp_ns, wall_ns};
   }
   for (const auto& m : batch.samples) {
     account->account(m.seq);
@@ -109,6 +154,7 @@ components::CounterList SensorSubscription::counters() const {
           {"seq_backwards", streams_.backwards()},
           {"silent_gaps", streams_.silent_gaps()},
           {"silent_lost_samples", streams_.silent_lost()},
+          {"lost_while_down", lost_while_down_},
           {"source_restarts", streams_.source_restarts()},
           {"other_tool_batches", streams_.other_tool_batches()},
           {"depth_messages", depth_messages_},

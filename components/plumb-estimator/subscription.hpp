@@ -12,6 +12,7 @@
 #include "plumb/components/status_reporter.hpp"
 #include "plumb/core/sample.hpp"
 #include "plumb/transport/transport.hpp"
+#include "resume_record.hpp"
 #include "tool_streams.hpp"
 
 namespace plumb::estimator_component {
@@ -38,12 +39,19 @@ class SensorSubscription {
   std::uint64_t silent_lost_samples() const { return streams_.silent_lost(); }
   std::size_t tools() const { return streams_.streams().size(); }
   std::uint64_t batches() const { return batches_; }
+  // The previous instance's marks (resume_record.hpp): each tool's first batch is compared with
+  // its mark, and the samples sent while this host was down are counted (lost_while_down).
+  void resume_after(const ToolMarks& previous);
+  // Where each tool stands now (with the previous instance's marks of tools not seen yet).
+  const ToolMarks& marks() const { return marks_; }
+  std::uint64_t lost_while_down() const { return lost_while_down_; }
 
  private:
   void take_depth();
   void note_stream_change(const std::string& tool, const SequenceAccount& account, std::uint64_t seq);
   // One batch into its tool's chunk (the take loop stays a loop over batches).
   bool route(const topics::SensorBatch& batch, ToolChunks& out);
+  void count_loss_while_down(const std::string& tool, const topics::SensorBatch& batch, std::int64_t wall_ns);
   transport::Reader<topics::SensorBatch> reader_;
   transport::Reader<topics::MeasuredDepth> depth_reader_;
   topics::MeasuredDepth depth_msg_;
@@ -56,6 +64,8 @@ class SensorSubscription {
   std::vector<topics::SensorBatch> taken_;  // reused by every take: its messages keep their capacity
   std::uint64_t batches_ = 0, samples_ = 0;
   std::uint64_t uncalibrated_samples_ = 0;
+  ToolMarks previous_, marks_;
+  std::uint64_t lost_while_down_ = 0;
 };
 
 }  // namespace plumb::estimator_component

@@ -7,7 +7,12 @@ fail() { echo "FAIL - $*"; fails=$((fails + 1)); }
 # that has already ended, as it should; that failure is ignored because it says nothing about the test.
 stop_programs_and_remove_work() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; rm -rf "$work"; }
 # A test that starts programs: the scratch folder `$work`, the empty array `pids`, and that EXIT trap.
-start_work_with_programs() { work=$(mktemp -d); pids=(); trap stop_programs_and_remove_work EXIT; }
+# The estimator host's record for its next instance (docs/operations.md) goes into `$work` too:
+# a test's host never reads what another test's host left.
+start_work_with_programs() {
+  work=$(mktemp -d); pids=(); trap stop_programs_and_remove_work EXIT
+  export PLUMB_STATE_DIR="$work/state"
+}
 # output_matches "pattern" command...: the command's output (stdout and stderr) matches. The output
 # is captured first: `cmd | grep -q` under pipefail fails at random, because grep quits at the first
 # match and a long writer (any --help) then dies of SIGPIPE.

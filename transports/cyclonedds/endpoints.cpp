@@ -40,6 +40,11 @@ class Writer final : public RawWriter {
     return status.current_count;
   }
 
+  bool wait_for_acknowledgments(std::chrono::nanoseconds timeout) override {
+    const auto ns = std::clamp<std::chrono::nanoseconds::rep>(timeout.count(), 0, std::numeric_limits<dds_duration_t>::max());
+    return dds_wait_for_acks(writer_.get(), static_cast<dds_duration_t>(ns)) == DDS_RETCODE_OK;
+  }
+
  private:
   const CycloneTypeSupport& type_;
   std::string topic_name_;

@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <utility>
+
 #include "plumb/components/convert.hpp"
 
 namespace plumb::components {
@@ -36,6 +38,24 @@ StatusReporter::StatusReporter(transport::Participant& participant, std::string 
 
 void StatusReporter::publish(const std::string& state, const CounterList& counters, const std::string& last_error) {
   writer_.write(make_status(component_, state, counters, last_error));
+}
+
+// The last words: the participant goes right after the reporter, and would take them along before
+// a matched monitor got them. Bounded: a monitor killed a moment ago is still matched until its
+// lease ends, and never answers. Nothing to wait for when every report was acknowledged long ago.
+StatusReporter::StatusReporter(StatusReporter&& other) noexcept
+    : writer_(std::move(other.writer_)),
+      component_(std::move(other.component_)),
+      period_(other.period_),
+      next_(other.next_),
+      owns_writer_(std::exchange(other.owns_writer_, false)) {}
+
+StatusReporter::~StatusReporter() {
+  if (!owns_writer_) return;
+  try {
+    writer_.wait_for_acknowledgments(kLastWordsWait);
+  } catch (...) {  // a vendor error at exit: nothing more can be done for the monitors
+  }
 }
 
 bool StatusReporter::due() {

@@ -94,7 +94,8 @@ int run_status(const StatusOptions& o) {
 
 void add_status_verb(CLI::App& app, Verbs& verbs) {
   auto* status = app.add_subcommand("status", "List every plumb component seen on the network, with its host and state");
-  status->footer("Listens to plumb/status (each component reports once a second). Exit 1 if nobody answered or "
+  status->footer("Listens to plumb/status (each component reports once a second and keeps its last report for "
+                 "monitors that start later: a running component answers at once). Exit 1 if nobody answered or "
                  "a component is degraded or failed.");
   auto o = std::make_shared<StatusOptions>();
   components::add_transport_options(*status, o->transport);

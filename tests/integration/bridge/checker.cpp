@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
     auto reader = transport::make_reader<topics::SensorBatch>(
         *connection.participant, topic, reliable ? transport::Qos::reliable_stream() : transport::Qos::sensor_stream());
     auto status_reader = transport::make_reader<topics::ComponentStatus>(
-        *connection.participant, transport::topic_names::kStatus, transport::Qos::status());
+        *connection.participant, transport::topic_names::kStatus, transport::default_qos_for_topic(transport::topic_names::kStatus));
     std::vector<std::uint64_t> expected;
     for (std::uint64_t s = first; expected.size() < count; ++s)
       if (!skip.count(s)) expected.push_back(s);

@@ -144,6 +144,13 @@ def restart(a):
             window_s = a.window_ns / 1e9
             outage = t_start - t_kill
             check(missing <= outage / window_s + 4, f"no more windows lost than the outage ({outage:.1f} s) and the restart explain")
+            # The new host read its previous instance's record and counted what the bridge sent in
+            # between: the outage, and at most 4 s more (its start and discovery).
+            host = last_status(status, "plumb-estimator", "lost_while_down")
+            counted = host[2]["lost_while_down"] if host else None
+            print(f"plumb-estimator: lost_while_down {counted} ({outage:.2f} s down at {a.rate_hz:g} Hz)")
+            check(counted is not None and outage * a.rate_hz - 100 <= counted <= (outage + 4) * a.rate_hz,
+                  "the new host counted the samples sent while it was down")
         elif component == "plumb-bridge":
             after = [e for e in sensor if e[0] in ("sensor_resume", "sensor_gap") and e[1] > t_kill]
             resumed = [e for e in sensor if e[0] == "sensor_resume" and e[1] > t_start]

@@ -6,9 +6,10 @@
 #   numbers, the attitude windows, plumb/calibration and plumb/status.
 # Each component is killed with SIGKILL, started again 2 s later, and must resume within 10 s; the
 # others keep running; what the outage lost is counted (estimator host: silent_lost_samples,
-# lost_samples; board: samples dropped while nobody read the line; survey: attitude windows
-# missing) and nothing else is lost: the calibrated stream and the attitude windows are complete
-# outside the outages. At the end every component stops on SIGINT within 10 s (nothing hangs).
+# lost_samples, and lost_while_down after its own restart; board: samples dropped while nobody
+# read the line; survey: attitude windows missing) and nothing else is lost: the calibrated stream
+# and the attitude windows are complete outside the outages. At the end every component stops on
+# SIGINT within 10 s (nothing hangs).
 # usage: restart_faults.sh BIN_DIR TRANSPORT DOMAIN
 set -uo pipefail
 bin=$1
@@ -97,7 +98,7 @@ wait $watch
 # for a reader that is not there; a real serial line neither), and the board may not even know it.
 dropped=$(grep -o "[0-9]* samples dropped so far" sim.log | tail -1 | cut -d' ' -f1)
 echo "board: ${dropped:-0} samples counted dropped by the board while nobody read the line"
-grep -h "starts at sequence\|resumed after a silence\|restarted its sequence\|samples lost while silent" plumb-estimator.log
+grep -h "starts at sequence\|resumed after a silence\|restarted its sequence\|samples lost while silent\|lost while this host was down" plumb-estimator.log
 grep -h "attitude gap" plumb-survey.log | head -3
 python3 "$here/check_faults.py" restart watch.log --events events.txt --window-ns 500000000 --rate-hz 1000 || { fails=$((fails + 1)); show_logs; }
 finish

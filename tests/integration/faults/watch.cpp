@@ -4,6 +4,7 @@
 //   attitude T START_NS END_NS SAMPLES FLAGS      every message on --attitude
 //   sensor_first T SEQ | sensor_gap T EXPECTED GOT | sensor_back T EXPECTED GOT
 //   sensor_resume T SEQ SILENT_S                  a batch after at least 0.5 s of silence
+//   batch T FIRST_SEQ LAST_SEQ                    every sensor batch (with --batches)
 //   status T COMPONENT STATE name=value ...       every plumb/status message
 //   calibration T CALIBRATION_ID                  every plumb/calibration message
 //   summary samples=N gaps=G lost=L backwards=B attitude=A   at the end
@@ -36,11 +37,12 @@ int main(int argc, char** argv) {
   components::TransportOptions transport_options;
   components::add_transport_options(app, transport_options);
   std::string attitude_topic, sensor_topic;
-  bool reliable_sensor = false, calibration = false;
+  bool reliable_sensor = false, calibration = false, every_batch = false;
   double duration_s = 0;
   app.add_option("--attitude", attitude_topic, "attitude topic to log (reliable)");
   app.add_option("--sensor", sensor_topic, "sensor topic whose sequence numbers to follow");
   app.add_flag("--reliable", reliable_sensor, "reliable sensor reader");
+  app.add_flag("--batches", every_batch, "log every sensor batch's first and last sequence number");
   app.add_flag("--calibration", calibration, "log plumb/calibration (transient-local: late joiners get it)");
   app.add_option("--duration", duration_s, "stop after this many seconds (0: at SIGINT/SIGTERM)");
   if (const int status = components::parse_command_line(app, argc, argv); status >= 0) return status;
@@ -56,7 +58,7 @@ int main(int argc, char** argv) {
       sensor.emplace(transport::make_reader<topics::SensorBatch>(
           participant, sensor_topic, reliable_sensor ? transport::Qos::reliable_stream() : transport::Qos::sensor_stream()));
     auto status = transport::make_reader<topics::ComponentStatus>(participant, transport::topic_names::kStatus,
-                                                                   transport::Qos::status());
+                                                                   transport::default_qos_for_topic(transport::topic_names::kStatus));
     std::optional<transport::Reader<topics::CalibrationCoefficients>> coefficients;
     if (calibration)
       coefficients.emplace(transport::make_reader<topics::CalibrationCoefficients>(
@@ -85,6 +87,9 @@ int main(int argc, char** argv) {
         const double silent = std::chrono::duration<double>(Clock::now() - last_batch).count();
         last_batch = Clock::now();
         if (batch.samples.empty()) continue;
+        if (every_batch)
+          std::printf("batch %.3f %llu %llu\n", wall(), static_cast<unsigned long long>(batch.samples.front().seq),
+                      static_cast<unsigned long long>(batch.samples.back().seq));
         if (next_seq && silent >= 0.5)
           std::printf("sensor_resume %.3f %llu %.3f\n", wall(), static_cast<unsigned long long>(batch.samples.front().seq), silent);
         for (const auto& m : batch.samples) {

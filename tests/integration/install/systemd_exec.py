@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Runs a systemd unit's ExecStart as systemd would, without systemd: the EnvironmentFile= files
-(read as systemd reads them: KEY=VALUE lines, '#' comments, quotes removed), %i replaced by the
+(read as systemd reads them: KEY=VALUE lines, '#' comments, quotes removed) and Environment= lines
+(a path under /var/lib/plumb taken inside ROOT), %i replaced by the
 instance, $VAR and ${VAR} words replaced by their value split into words, StateDirectory= made, and
 the program started with that environment. Paths of the unit (the environment files, the program,
 and arguments under /etc/plumb and /var/lib/plumb) are taken inside ROOT, where the packages were
@@ -32,6 +33,9 @@ for line in open(unit):
                 continue
             key, value = text.split("=", 1)
             env[key.strip()] = " ".join(shlex.split(value)) if value.strip() else ""
+    elif line.startswith("Environment="):
+        key, value = line.split("=", 1)[1].split("=", 1)
+        env[key] = root + value if value.startswith(("/etc/plumb/", "/var/lib/plumb/")) else value
     elif line.startswith("StateDirectory="):
         for d in line.split("=", 1)[1].split():
             os.makedirs(f"{root}/var/lib/{d}", exist_ok=True)

@@ -76,7 +76,11 @@ TEST(TopicNames, TheTableMatchesTheFormerQosProfiles) {
   EXPECT_TRUE(same(default_qos_for_topic(names::sensor("other")), Qos::sensor_stream()));
   EXPECT_TRUE(same(default_qos_for_topic(names::attitude("x")), Qos::attitude()));
   EXPECT_TRUE(same(default_qos_for_topic(names::kCalibration), Qos::calibration()));
-  EXPECT_TRUE(same(default_qos_for_topic(names::kStatus), Qos::status()));
+  // Status: the table is the readers' QoS; writers keep only their last report (Qos::status()).
+  const Qos status_readers = default_qos_for_topic(names::kStatus);
+  EXPECT_EQ(status_readers.durability, Durability::TransientLocal);
+  EXPECT_TRUE(same(status_readers, {Reliability::Reliable, Durability::TransientLocal, History::KeepLast, 32}));
+  EXPECT_TRUE(same(Qos::status(), {Reliability::Reliable, Durability::TransientLocal, History::KeepLast, 1}));
   EXPECT_TRUE(same(default_qos_for_topic(names::kSimTruth), Qos::attitude()));
 }
 

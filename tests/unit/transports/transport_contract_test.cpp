@@ -5,6 +5,9 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <map>
+#include <string>
+#include <vector>
 #include <chrono>
 #include <thread>
 
@@ -17,6 +20,7 @@ namespace {
 using namespace plumb;
 using namespace plumb::transport;
 using namespace std::chrono_literals;
+namespace names_for_status_test = plumb::transport::topic_names;
 
 class TransportContract : public ::testing::TestWithParam<std::string> {
  protected:
@@ -148,6 +152,49 @@ TEST_P(TransportContract, KeepsCalibrationForALateReader) {
   topics::CalibrationCoefficients got;
   ASSERT_TRUE(receive(reader, got, 10s));
   EXPECT_EQ(sent, got);
+}
+
+// plumb/status is a state: a monitor that joins late gets the last report of every writer (and
+// only the last: writers keep_last 1), not only the next one.
+TEST_P(TransportContract, KeepsTheLastStatusOfEachWriterForALateReader) {
+  auto p = participant();
+  const std::string name = topic("plumb/status");
+  auto first = make_writer<topics::ComponentStatus>(*p, name, Qos::status());
+  auto second = make_writer<topics::ComponentStatus>(*p, name, Qos::status());
+  topics::ComponentStatus s;
+  for (const char* state : {"starting", "running"}) {
+    s.state = state;
+    s.component = "first";
+    first.write(s);
+    s.component = "second";
+    second.write(s);
+  }
+  auto reader = make_reader<topics::ComponentStatus>(*p, name, default_qos_for_topic(names_for_status_test::kStatus));
+  std::map<std::string, std::vector<std::string>> states;  // component -> the states it got, in order
+  topics::ComponentStatus got;
+  for (int i = 0; i < 2 && receive(reader, got, 10s); ++i) states[got.component].push_back(got.state);
+  while (reader.wait(200ms) && reader.take(got)) states[got.component].push_back(got.state);
+  EXPECT_EQ(states["first"], std::vector<std::string>{"running"});
+  EXPECT_EQ(states["second"], std::vector<std::string>{"running"});
+}
+
+// A writer's last words: with no reader, or once the reader has the sample, the wait ends with true.
+TEST_P(TransportContract, WaitsForAcknowledgmentsOfMatchedReaders) {
+  auto p = participant();
+  const std::string name = topic("plumb/status_acks");
+  auto writer = make_writer<topics::ComponentStatus>(*p, name, Qos::status());
+  topics::ComponentStatus s;
+  s.state = "stopping";
+  writer.write(s);
+  EXPECT_TRUE(writer.wait_for_acknowledgments(1s));
+  auto reader = make_reader<topics::ComponentStatus>(*p, name, default_qos_for_topic(names_for_status_test::kStatus));
+  for (int i = 0; i < 100 && writer.matched_readers() == 0; ++i) std::this_thread::sleep_for(50ms);
+  ASSERT_EQ(writer.matched_readers(), 1u);
+  writer.write(s);
+  EXPECT_TRUE(writer.wait_for_acknowledgments(5s));
+  topics::ComponentStatus got;
+  ASSERT_TRUE(receive(reader, got, 10s));
+  EXPECT_EQ(got.state, "stopping");
 }
 
 TEST_P(TransportContract, DiscoversItsOwnTopicsWithTheirTypeNames) {

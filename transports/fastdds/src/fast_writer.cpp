@@ -2,6 +2,9 @@
 
 #include "qos.hpp"
 
+#include <algorithm>
+#include <cstdint>
+
 namespace plumb::transport::fastdds {
 
 namespace dds = eprosima::fastdds::dds;
@@ -31,6 +34,13 @@ std::size_t FastWriter::matched_readers() const {
   dds::PublicationMatchedStatus status;
   writer_->get_publication_matched_status(status);
   return static_cast<std::size_t>(status.current_count);
+}
+
+bool FastWriter::wait_for_acknowledgments(std::chrono::nanoseconds timeout) {
+  const auto ns = std::max<std::chrono::nanoseconds::rep>(timeout.count(), 0);
+  const eprosima::fastrtps::Duration_t wait(static_cast<std::int32_t>(ns / 1000000000),
+                                            static_cast<std::uint32_t>(ns % 1000000000));
+  return writer_->wait_for_acknowledgments(wait) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK;
 }
 
 }  // namespace plumb::transport::fastdds

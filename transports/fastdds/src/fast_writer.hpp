@@ -3,6 +3,7 @@
 
 #include <fastdds/dds/publisher/DataWriter.hpp>
 
+#include <chrono>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -19,6 +20,7 @@ class FastWriter final : public RawWriter {
 
   void write(const void* message) override;
   std::size_t matched_readers() const override;
+  bool wait_for_acknowledgments(std::chrono::nanoseconds timeout) override;
 
  private:
   std::shared_ptr<ParticipantState> state_;

@@ -48,7 +48,11 @@ struct Qos {
   // Sensor stream for runs where nothing may be lost (bridge --reliable, tests that count sequence numbers).
   static Qos reliable_stream() { return {Reliability::Reliable, Durability::Volatile, History::KeepLast, 4096}; }
   static Qos attitude() { return {Reliability::Reliable, Durability::Volatile, History::KeepLast, 64}; }
-  static Qos status() { return {Reliability::Reliable, Durability::Volatile, History::KeepLast, 16}; }
+  // Status: a state, not a stream. Each writer keeps its last report for readers that join later
+  // (ComponentStatus has no key: one instance per writer, so keep_last 1 is "the last per writer").
+  // Readers use the topic's table entry (idl/status.idl), whose deeper history holds one report
+  // of every writer when many answer a late joiner at once.
+  static Qos status() { return {Reliability::Reliable, Durability::TransientLocal, History::KeepLast, 1}; }
   // Calibration: kept by the writer for late joiners.
   static Qos calibration() { return {Reliability::Reliable, Durability::TransientLocal, History::KeepLast, 1}; }
 };
@@ -84,6 +88,13 @@ class RawWriter {
   virtual void write(const void* message) = 0;
   //   blocks: no (reads the vendor's status). allocates: no. threads: any.
   virtual std::size_t matched_readers() const = 0;
+  // Waits until every matched reliable reader has acknowledged every sample written so far, or the
+  // timeout passes; true when all did. A component's last words (its "stopping" status) are
+  // written, waited for, and only then is the participant deleted: deleting it at once can take
+  // the sample with it before a matched reader got it. Best-effort readers never acknowledge and
+  // are not waited for.
+  //   blocks: yes, up to `timeout` (negative counts as 0). allocates: no. threads: any but on_data.
+  virtual bool wait_for_acknowledgments(std::chrono::nanoseconds timeout) = 0;
 };
 
 // Where a batched take puts its messages: slot(context, i) returns the i-th message to fill (the
@@ -169,6 +180,7 @@ template <class T> class Writer {
   explicit Writer(std::unique_ptr<RawWriter> raw) : raw_(std::move(raw)) {}
   void write(const T& message) { raw_->write(&message); }
   std::size_t matched_readers() const { return raw_->matched_readers(); }
+  bool wait_for_acknowledgments(std::chrono::nanoseconds timeout) { return raw_->wait_for_acknowledgments(timeout); }
 
  private:
   std::unique_ptr<RawWriter> raw_;

@@ -23,9 +23,17 @@ topics::ComponentStatus make_status(const std::string& component, const std::str
 
 class StatusReporter {
  public:
+  static constexpr std::chrono::milliseconds kLastWordsWait{1000};
   StatusReporter(transport::Participant& participant, std::string component, double period_s = 1.0,
                  const std::string& topic = transport::topic_names::kStatus);
-  // Publishes now.
+  // The last report ("stopping", "finished", or "failed" before an exit) must reach the monitors
+  // already matched: the reporter waits, at most kLastWordsWait, until every one of them has
+  // acknowledged it before its writer goes (and the participant after it).
+  ~StatusReporter();
+  StatusReporter(StatusReporter&& other) noexcept;
+  StatusReporter& operator=(StatusReporter&&) = delete;
+  // Publishes now. The writer keeps the last report for monitors that join later
+  // (transient-local), as long as the component runs.
   void publish(const std::string& state, const CounterList& counters, const std::string& last_error = "");
   // True once per period: the caller then gathers its counters and publishes.
   bool due();
@@ -35,6 +43,7 @@ class StatusReporter {
   std::string component_;
   std::chrono::steady_clock::duration period_;
   std::chrono::steady_clock::time_point next_;
+  bool owns_writer_ = true;  // false once moved from: nothing left to deliver
 };
 
 }  // namespace plumb::components
