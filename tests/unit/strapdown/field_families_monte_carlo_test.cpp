@@ -59,13 +59,14 @@ Family dropouts_and_repeats() {
 // within 0.2 deg, the end position within 1 % of MD (0.20-0.36 %; 6.2 % before the gaps' readings
 // were made up in the navigation frame, 0.76-0.90 % while they held the velocity across the axis
 // of the gap's start). Not met (docs/navigator.md, "Samples lost and sent twice"): the MEMS axis,
-// 0.79 deg; its measured level is the bound here.
+// 0.69 deg (0.79 while one reading's rate across the axis was held through a gap, its noise with
+// it: azimuth RMS(error/sigma) 1.80, now 1.23); its measured level is the bound here.
 // A gap across a rotary segment's spin-up left the toolface 24 deg off (the rate's path through
 // the ramp is not the line the made-up readings take) until the field across the axis measured the
 // gap's turn: the worst attitude 0.26 deg tactical, 0.79 MEMS.
 TEST(StrapdownFieldFamilies, DropoutsAndRepeats) {
   for (const auto& [grade, max_axis, worst] :
-       {std::tuple{sim::ImuGrade::tactical(), 0.2, 0.5}, std::tuple{sim::ImuGrade::mems(), 0.85, 1.0}}) {
+       {std::tuple{sim::ImuGrade::tactical(), 0.2, 0.5}, std::tuple{sim::ImuGrade::mems(), 0.75, 1.0}}) {
     const FamilyResult f = sweep(("dropouts and repeats, " + grade.name).c_str(), grade, 100, dropouts_and_repeats());
     expect_field_targets(f, grade.name, max_axis, 3.0, 0.5);
     EXPECT_LE(f.worst_attitude_deg, worst) << grade.name;

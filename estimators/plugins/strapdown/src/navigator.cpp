@@ -180,7 +180,8 @@ void Navigator::bridge_gap(const Input& from, const Input& at, const Input& in, 
   const Eigen::Vector3d across = v - c_bn.col(2) * c_bn.col(2).dot(v);
   // Through the gap in steps of the nominal interval, on readings made up (stream_faults.hpp).
   const std::vector<Input> made_up = StreamFaults::gap_readings(
-      from, at, c_bn, dt_nominal, Eigen::Vector3d(0.0, 0.0, -filter_.gravity()), filter_.accel_bias());
+      from, at, c_bn, dt_nominal, Eigen::Vector3d(0.0, 0.0, -filter_.gravity()), filter_.accel_bias(),
+      faults_.cross_rate());
   for (std::size_t k = 1; k < made_up.size(); ++k)
     filter_.step(made_up[k - 1], made_up[k], nullptr, config_.samples_are_means, dt_nominal);
   filter_.shift_motion(-across, -across * (at.t - from.t));

@@ -13,11 +13,16 @@ namespace {
 // The spread's memory: long enough to hold a few seconds of drilling, short enough to follow a
 // change from still to turning.
 constexpr double kSpreadMemoryS = 2.0;
+// The rate across the axis held through a gap: its mean over about this long.
+constexpr double kCrossRateMemoryS = 1.0;
 }  // namespace
 
 void StreamFaults::reset() {
   recent_ = 0;
   spread_w2_ = spread_f2_ = spread_b2_ = 0;
+  cross_rate_.setZero();
+  cross_rate_var_ = 0;
+  cross_rate_started_ = false;
   pending_att_ = pending_vel_ = 0;
   pending_turn_.setZero();
   pending_force_.setZero();
@@ -40,6 +45,11 @@ void StreamFaults::observe(const InputReading& in, double dt, double dt_nominal)
   r0_ = r1_;
   r1_ = Recent{in.t, in.w, in.f, in.b};
   recent_ = std::min(recent_ + 1, 2);
+  // An exponential mean over kCrossRateMemoryS: its noise is the readings' times a / (2 - a).
+  const double a = cross_rate_started_ && dt > 0 ? std::min(1.0, dt / kCrossRateMemoryS) : 1.0;
+  cross_rate_ += a * (in.w.head<2>() - cross_rate_);
+  cross_rate_var_ = a * a * spread_w2_ + (1 - a) * (1 - a) * cross_rate_var_;
+  cross_rate_started_ = true;
 }
 
 // The lost readings are taken as unknowns with the spread the readings show, each standing for
@@ -60,6 +70,9 @@ void StreamFaults::bridge(const InputReading& prev, const InputReading& in, doub
   // the epoch: a random walk would tie it to the position, and a lateral-velocity update after the
   // gap would move the position by metres for a velocity error the step made at its end.
   pending_att_ += spread_w2_ * dt_nominal * missing_s;
+  // The rate across the axis held through the gap (gap_readings) holds its mean's noise: an angle
+  // of that noise times the gap.
+  pending_att_ += cross_rate_var_ * dt * dt;
   constexpr double kHalfOverRoot3 = 0.28867513459481287;  // 1 / (2 sqrt(3))
   const Eigen::Vector3d dtheta = (kHalfOverRoot3 * dt) * (c_bn * (in.w - prev.w));
   pending_turn_.head<3>() += dtheta;
@@ -69,7 +82,8 @@ void StreamFaults::bridge(const InputReading& prev, const InputReading& in, doub
 
 std::vector<InputReading> StreamFaults::gap_readings(const InputReading& prev, const InputReading& in,
                                                     const Eigen::Matrix3d& c_bn, double dt_nominal,
-                                                    const Eigen::Vector3d& f_n, const Eigen::Vector3d& accel_bias) {
+                                                    const Eigen::Vector3d& f_n, const Eigen::Vector3d& accel_bias,
+                                                    const Eigen::Vector2d& cross_rate) {
   const double span = in.t - prev.t;
   const auto steps = static_cast<std::size_t>(std::max(1.0, std::round(span / (dt_nominal > 0 ? dt_nominal : span))));
   const Eigen::Vector3d f_start = c_bn.transpose() * f_n;
@@ -80,7 +94,8 @@ std::vector<InputReading> StreamFaults::gap_readings(const InputReading& prev, c
     const double share = static_cast<double>(k) / static_cast<double>(steps);
     InputReading& r = readings[k];
     r.t = prev.t + share * span;
-    r.w = prev.w + share * (in.w - prev.w);
+    r.w.z() = prev.w.z() + share * (in.w.z() - prev.w.z());
+    r.w.head<2>() = cross_rate;
     if (k > 0) {
       const Eigen::Vector3d turn = (0.5 * span / static_cast<double>(steps)) * (readings[k - 1].w + r.w);
       const double angle = turn.norm();

@@ -21,8 +21,13 @@ class StreamFaults {
  public:
   void reset();
   // Every navigable reading, dt after the one before: the spread of the readings about their own
-  // local trend, from second differences over evenly spaced readings.
+  // local trend, from second differences over evenly spaced readings, and the rate across the axis
+  // over the last second.
   void observe(const InputReading& in, double dt, double dt_nominal);
+  // The tool-frame rate across the axis (x, y) over the last second: what a drill string turns
+  // across its axis is its hole's curvature and the gyros' biases, steady over seconds; one reading
+  // holds its noise too, and held through a gap of T that noise is an angle of noise T.
+  Eigen::Vector2d cross_rate() const { return cross_rate_; }
   // A gap of dt (the step that ends at t) where dt_nominal was due, as the input checks see it:
   // counted, and said once.
   void lost(double t, double dt, double dt_nominal, Counters& counters);
@@ -42,8 +47,8 @@ class StreamFaults {
   ProcessNoise widen(const ProcessNoise& base, double dt);
   std::vector<std::string> take_notices();
   // The readings a drilling tool's mechanization steps through across a gap, from `prev` (the
-  // reading before it, its attitude c_bn) to `in`: one per nominal interval, the rate on its line
-  // between the two, the specific force f_n held in the navigation frame (gravity's reaction: a
+  // reading before it, its attitude c_bn) to `in`: one per nominal interval, the rate about the
+  // axis on its line between the two and across it `cross_rate` (cross_rate()), the specific force f_n held in the navigation frame (gravity's reaction: a
   // string's acceleration over seconds is millimetres per second squared) seen from the attitude
   // the rates turn the tool to, with the accelerometers' estimated bias. Not one step: through a
   // turn of hundreds of degrees (a second at 30 rpm) a step integrates the force as if the turn were
@@ -53,7 +58,8 @@ class StreamFaults {
   // the last in's.
   static std::vector<InputReading> gap_readings(const InputReading& prev, const InputReading& in,
                                                 const Eigen::Matrix3d& c_bn, double dt_nominal,
-                                                const Eigen::Vector3d& f_n, const Eigen::Vector3d& accel_bias);
+                                                const Eigen::Vector3d& f_n, const Eigen::Vector3d& accel_bias,
+                                                const Eigen::Vector2d& cross_rate);
 
  private:
   struct Recent {
@@ -64,6 +70,9 @@ class StreamFaults {
   Recent r0_, r1_;
   int recent_ = 0;
   double spread_w2_ = 0, spread_f2_ = 0, spread_b2_ = 0;
+  Eigen::Vector2d cross_rate_ = Eigen::Vector2d::Zero();
+  double cross_rate_var_ = 0;  // of cross_rate_'s noise, per axis (rad/s)^2
+  bool cross_rate_started_ = false;
   double pending_att_ = 0, pending_vel_ = 0;  // variance per axis to add at the next epoch
   Eigen::Matrix<double, 6, 1> pending_turn_ = Eigen::Matrix<double, 6, 1>::Zero();
   Eigen::Matrix3d pending_force_ = Eigen::Matrix3d::Zero();
