@@ -12,7 +12,9 @@
 #include <optional>
 #include <span>
 
+#include "component_service.hpp"
 #include "estimate_line.hpp"
+#include "lineup.hpp"
 
 #include "plumb/components/status_reporter.hpp"
 #include "plumb/estimator/loader.hpp"
@@ -61,11 +63,13 @@ class Host {
   // before anything runs; every further tool gets a copy made the same way.
   explicit Host(const HostOptions& o)
       : o_(o),
-        first_runner_(make_runner()),
+        lineup_(o.plugins, o.params, o.window_s),
+        first_runner_(lineup_.make_runner()),
         conn_(components::connect(o.transport, "plumb-estimator")),
         publication_(*conn_.participant),
         input_(*conn_.participant, {o.input_topic, o.tool_id, o.reliable}),
-        status_(*conn_.participant, "plumb-estimator") {
+        status_(*conn_.participant, "plumb-estimator"),
+        service_(*conn_.participant, o.name.empty() ? components::host_name() : o.name) {
     for (const auto& slot : first_runner_.slots()) publication_.add(slot.name, slot.estimator->info().uses_gyro);
     if (o.compare_truth) truth_ = std::make_unique<TruthLookup>(*conn_.participant, o.truth_topic);
   }
@@ -73,17 +77,11 @@ class Host {
   int run();
 
  private:
-  estimator::Runner make_runner() const {
-    estimator::Runner r = estimator::load_runner(o_.plugins);
-    r.configure(o_.params, o_.window_s);
-    return r;
-  }
-
   estimator::Runner& runner_for(const std::string& tool) {
     auto it = runners_.find(tool);
     if (it != runners_.end()) return it->second;
     if (runners_.empty()) return runners_.emplace(tool, std::move(first_runner_)).first->second;
-    return runners_.emplace(tool, make_runner()).first->second;
+    return runners_.emplace(tool, lineup_.make_runner()).first->second;
   }
 
   estimator::Runner::Sink publisher_for(const std::string& tool) {
@@ -107,14 +105,20 @@ class Host {
   void push_chunk(const std::string& tool, std::vector<Sample>& chunk);
   void flush_idle();
   int summarise();
+  // plumb component / plumb param: applied here, between two pushes, so at a window boundary.
+  void serve_requests();
+  topics::ComponentReply handle(const topics::ComponentRequest& request);
+  template <class F> void for_each_runner(F&& f);
 
   const HostOptions& o_;
+  Lineup lineup_;  // the plugins and their parameters now: a new tool's runner starts from it
   estimator::Runner first_runner_;
   std::map<std::string, estimator::Runner> runners_;  // tool id -> its runner
   components::Connection conn_;
   EstimatePublication publication_;
   SensorSubscription input_;
   components::StatusReporter status_;
+  ComponentService service_;
   std::unique_ptr<TruthLookup> truth_;
   std::string last_notice_;  // the latest thing a plugin had to say, on plumb/status too
   std::map<std::string, std::optional<double>> last_t_;  // tool id -> time of its last sample
@@ -125,6 +129,8 @@ class Host {
 components::CounterList Host::counters() const {
   components::CounterList all = input_.counters();
   all.emplace_back("new_runs", new_runs_);
+  all.emplace_back("requests", service_.answered());
+  all.emplace_back("requests_refused", service_.refused());
   // Summed over the tools, in the plugins' order: the per-plugin counters keep their names.
   const std::size_t own = all.size();
   if (runners_.empty())
@@ -152,7 +158,84 @@ void Host::announce() const {
             << (o_.tool_id.empty() ? " (each tool separately)" : " (tool '" + o_.tool_id + "' only)") << ", plugins:";
   for (const auto& slot : first_runner_.slots())
     std::cerr << ' ' << slot.name << " -> " << transport::topic_names::attitude(slot.name);
-  std::cerr << std::endl;
+  std::cerr << "; host '" << service_.name() << "' for plumb component and plumb param" << std::endl;
+}
+
+template <class F> void Host::for_each_runner(F&& f) {
+  if (runners_.empty()) f(std::string(), first_runner_);  // no tool yet: the runner the first one gets
+  for (auto& [tool, runner] : runners_) f(tool, runner);
+}
+
+namespace {
+
+std::vector<std::string> split_assignments(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const auto end = std::min(text.find(';', start), text.size());
+    if (end > start) out.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return out;
+}
+
+topics::ComponentParameter row_of(const Lineup::Value& v) { return {v.plugin, v.name, v.value, v.default_value}; }
+
+}  // namespace
+
+topics::ComponentReply Host::handle(const topics::ComponentRequest& r) {
+  topics::ComponentReply reply;
+  const std::string& plugin = r.plugin;
+  try {
+    if (r.verb == "list") {
+      for (const auto& e : lineup_.entries()) reply.rows.push_back({e.name, "", e.info.version, e.info.description});
+      reply.message = std::to_string(lineup_.entries().size()) + " plugin(s)";
+    } else if (r.verb == "load") {
+      const estimator::Parameters parameters = lineup_.load(plugin, split_assignments(r.value));
+      publication_.add(plugin, lineup_.find(plugin)->info.uses_gyro);
+      for_each_runner([&](const std::string& tool, estimator::Runner& runner) {
+        runner.add(plugin, estimator::load_estimator(plugin));
+        runner.reconfigure(plugin, parameters, publisher_for(tool));  // a new slot: nothing open to end
+      });
+      reply.message = "loaded " + plugin + ", publishing on " + transport::topic_names::attitude(plugin);
+    } else if (r.verb == "unload") {
+      lineup_.unload(plugin);
+      for_each_runner([&](const std::string& tool, estimator::Runner& runner) { runner.remove(plugin, publisher_for(tool)); });
+      publication_.retire(plugin);
+      reply.message = "unloaded " + plugin + " (its open window published)";
+    } else if (r.verb == "set") {
+      const estimator::Parameters parameters = lineup_.set(plugin, r.name, r.value);
+      for_each_runner([&](const std::string& tool, estimator::Runner& runner) {
+        runner.reconfigure(plugin, parameters, publisher_for(tool));
+      });
+      reply.message = plugin + "." + r.name + " = " + r.value + " from the next window (the open one published)";
+    } else if (r.verb == "get") {
+      reply.rows.push_back(row_of(lineup_.get(plugin, r.name)));
+    } else if (r.verb == "dump") {
+      for (const auto& v : lineup_.dump(plugin)) reply.rows.push_back(row_of(v));
+      if (reply.rows.size() > topics::ComponentReply::kRowsMax) reply.rows.resize(topics::ComponentReply::kRowsMax);
+    } else {
+      throw std::invalid_argument("unknown request '" + r.verb + "' (list, load, unload, get, set, dump)");
+    }
+    reply.ok = true;
+  } catch (const std::exception& e) {
+    reply.ok = false;
+    reply.message = e.what();
+  }
+  return reply;
+}
+
+void Host::serve_requests() {
+  for (const auto& request : service_.take()) {
+    topics::ComponentReply reply = handle(request);
+    std::string what = request.verb + (request.plugin.empty() ? "" : " " + request.plugin) +
+                       (request.name.empty() ? "" : " " + request.name) + (request.verb == "set" ? " " + request.value : "");
+    std::cerr << "plumb-estimator: " << what << " (from " << request.client << "): "
+              << (reply.ok ? reply.message.empty() ? std::string("done") : reply.message : "refused: " + reply.message)
+              << std::endl;
+    service_.answer(request, std::move(reply));
+  }
+  publication_.sweep();
 }
 
 // Said once, at the first samples: a plugin that needs gyros on a topic that carries none.
@@ -238,6 +321,7 @@ int Host::run() {
       last_sample_time = Clock::now();
       next_silence_note_s = 5;
     }
+    serve_requests();
     const double silent_s = seconds_since(last_sample_time);
     if (pending && o_.idle_flush_s > 0 && silent_s > o_.idle_flush_s) {
       flush_idle();
