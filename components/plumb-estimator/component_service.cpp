@@ -36,7 +36,7 @@ void ComponentService::answer(const topics::ComponentRequest& request, topics::C
     reply.message.resize(topics::ComponentReply::kMessageMax);
   replies_.write(reply);
   ++answered_;
-  if (!reply.ok) ++refused_;
+  if (reply.result != topics::COMPONENT_DONE) ++refused_;
   last_[request.client] = {request.request_id, std::move(reply)};
 }
 

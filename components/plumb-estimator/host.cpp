@@ -217,9 +217,9 @@ topics::ComponentReply Host::handle(const topics::ComponentRequest& r) {
     } else {
       throw std::invalid_argument("unknown request '" + r.verb + "' (list, load, unload, get, set, dump)");
     }
-    reply.ok = true;
+    reply.result = topics::COMPONENT_DONE;
   } catch (const std::exception& e) {
-    reply.ok = false;
+    reply.result = topics::COMPONENT_REFUSED;
     reply.message = e.what();
   }
   return reply;
@@ -231,7 +231,7 @@ void Host::serve_requests() {
     std::string what = request.verb + (request.plugin.empty() ? "" : " " + request.plugin) +
                        (request.name.empty() ? "" : " " + request.name) + (request.verb == "set" ? " " + request.value : "");
     std::cerr << "plumb-estimator: " << what << " (from " << request.client << "): "
-              << (reply.ok ? reply.message.empty() ? std::string("done") : reply.message : "refused: " + reply.message)
+              << (reply.result == topics::COMPONENT_DONE ? reply.message.empty() ? std::string("done") : reply.message : "refused: " + reply.message)
               << std::endl;
     service_.answer(request, std::move(reply));
   }

@@ -98,7 +98,7 @@ int run_component_request(const components::TransportOptions& transport, double 
     components::print_error("plumb", client.no_answer(request.host));
     return 1;
   }
-  if (!reply->ok) {
+  if (reply->result != topics::COMPONENT_DONE) {
     components::print_error("plumb", reply->message);
     return 1;
   }
