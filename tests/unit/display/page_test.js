@@ -9,9 +9,9 @@ const page = fs.readFileSync(process.argv[2], "utf8");
 const begin = page.indexOf("// PURE BEGIN"), end = page.indexOf("// PURE END");
 assert(begin > 0 && end > begin, "the page marks its pure part");
 const {angleText, wrapsAround, LENGTH_UNITS, cardTitle, counterText, tickStep, nearestOffsets, stationSd,
-       TOOLFACE_TRACE_MAX_RPM, depthText} = new Function(page.slice(begin, end) +
+       TOOLFACE_TRACE_MAX_RPM, depthText, differences, differenceText} = new Function(page.slice(begin, end) +
   "\nreturn {angleText, wrapsAround, LENGTH_UNITS, cardTitle, counterText, tickStep, nearestOffsets, stationSd, " +
-  "TOOLFACE_TRACE_MAX_RPM, depthText};")();
+  "TOOLFACE_TRACE_MAX_RPM, depthText, differences, differenceText};")();
 
 let checks = 0;
 const check = (ok, what) => { assert(ok, what); ++checks; };
@@ -45,6 +45,31 @@ check(depthText({md: 1234.5, flags: 1}, 1, "m") === " · depth 1234.50 m (still)
 check(depthText({md: 304.8, flags: 3}, 1 / 0.3048, "ft") === " · depth 1000.00 ft (moving)", "feet, moving");
 check(depthText({md: 10, flags: 5}, 1, "m").endsWith("(in slips)"), "in slips");
 check(depthText({md: 10, flags: 0}, 1, "m") === "" && depthText(undefined, 1, "m") === "", "no valid depth: nothing");
+
+// Two plugins of one tool: each against the tool's reference (first by name), angles wrapped,
+// sigmas combined, an angle that either does not give left out, stale estimates ignored.
+{
+  const att = (k, tool, est, inc, azi, gtf, flags, rx) => ({k, tool, est, inc, azi, gtf, flags, rx,
+                                                          sinc: 0.03, sazi: 0.3, stf: 0.4});
+  const d = differences([att("sim/static", "sim", "static", 2.0, 359, 10, 7, 1000),
+                         att("sim/integral", "sim", "integral", 2.05, 1, 350, 7, 1000),
+                         att("sim/compensated", "sim", "compensated", 1.98, 0, 10, 3, 1000),
+                         att("other/static", "other", "static", 5, 80, 0, 7, 1000),
+                         att("sim/zz", "sim", "zz", 9, 9, 9, 7, -9000)], 1500, 5000);
+  check(!d.has("sim/compensated"), "the reference gets no difference");
+  check(d.get("sim/integral").ref === "compensated", "the reference is the first by name: " + d.get("sim/integral").ref);
+  check(d.get("sim/static").ref === "compensated" && !d.has("other/static"), "a tool with one estimator: none");
+  const i = d.get("sim/integral");
+  check(Math.abs(i.inc.d - 0.07) < 1e-9 && Math.abs(i.inc.sd - Math.hypot(0.03, 0.03)) < 1e-12, "inclination " + JSON.stringify(i.inc));
+  check(Math.abs(i.azi.d - 1) < 1e-9, "azimuth 1 minus 0 is +1: " + i.azi.d);
+  check(i.tf === null, "the reference gives no toolface: none");
+  const s = d.get("sim/static");
+  check(Math.abs(s.azi.d + 1) < 1e-9, "azimuth 359 minus 0 wraps to -1: " + s.azi.d);
+  check(!d.has("sim/zz"), "a stale estimate is left out");
+  check(differenceText(i) === "minus compensated: inclination +0.070 ± 0.042°, azimuth +1.00 ± 0.42°, toolface -",
+        differenceText(i));
+  check(differenceText(undefined) === "", "no difference: no text");
+}
 
 // The history breaks its line where the angle wraps, not elsewhere.
 check(wrapsAround(359, 1) && wrapsAround(2, 358), "359 -> 1 and 2 -> 358 wrap");
