@@ -19,8 +19,9 @@ rows() { local n; n=$(grep -c . "$1" 2>/dev/null) || n=0; echo $((n > 0 ? n - 1 
 # wait_rows FILE N: until FILE has N data rows (bounded: 60 s, then the checks below say what is missing).
 wait_rows() { for _ in $(seq 600); do [ "$(rows "$1")" -ge "$2" ] && return 0; sleep 0.1; done; return 1; }
 
+# Line-buffered: the checks read the files while the echoes run (a file's stdout is block-buffered).
 for p in static integral; do
-  "$bin/plumb" topic echo plumb/attitude/$p --csv --transport "$cli_t" --timeout 120 > $p.csv 2> echo_$p.out &
+  stdbuf -oL "$bin/plumb" topic echo plumb/attitude/$p --csv --transport "$cli_t" --timeout 120 > $p.csv 2> echo_$p.out &
   pids+=($!)
 done
 "$bin/plumb-estimator" --transport "$host_t" --name "$name" --input plumb/sensor/raw --reliable --plugin static \
