@@ -44,11 +44,12 @@ std::optional<topics::ComponentReply> ComponentClient::ask(topics::ComponentRequ
   auto next_send = RequestClock::now();
   topics::ComponentReply reply;
   while (!components::g_stop && RequestClock::now() < until) {
-    if (RequestClock::now() >= next_send) {
-      if (requests_.matched_readers() > 0) requests_.write(request);
+    // Sent as soon as a host's reader matched, then again every kResendEvery until answered.
+    if (RequestClock::now() >= next_send && requests_.matched_readers() > 0) {
+      requests_.write(request);
       next_send = RequestClock::now() + kResendEvery;
     }
-    replies_.wait(std::chrono::milliseconds(50));
+    replies_.wait(std::chrono::milliseconds(20));
     while (replies_.take(reply))
       if (reply.client == client_ && reply.request_id == request.request_id && reply.host == request.host) return reply;
   }
@@ -66,8 +67,9 @@ std::vector<topics::ComponentReply> ComponentClient::list_all(double listen_s) {
   auto next_send = RequestClock::now();
   topics::ComponentReply reply;
   while (!components::g_stop && RequestClock::now() < until) {
-    if (RequestClock::now() >= next_send) {
-      if (requests_.matched_readers() > 0) requests_.write(request);
+    // Sent as soon as a host's reader matched, then again every kResendEvery until answered.
+    if (RequestClock::now() >= next_send && requests_.matched_readers() > 0) {
+      requests_.write(request);
       next_send = RequestClock::now() + kResendEvery;
     }
     replies_.wait(std::chrono::milliseconds(50));
