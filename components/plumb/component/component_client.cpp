@@ -5,6 +5,7 @@
 #include <chrono>
 #include <iostream>
 #include <set>
+#include <stdexcept>
 #include <sstream>
 
 #include "plumb/components/status_reporter.hpp"
@@ -26,14 +27,26 @@ std::string make_client_id() {
   return id.str();
 }
 
+// On a secured domain only an identity granted plumb/component/request may send requests: said so,
+// rather than only the vendor's "not allowed".
+transport::Writer<topics::ComponentRequest> make_request_writer(components::Connection& conn) {
+  try {
+    return transport::make_writer<topics::ComponentRequest>(*conn.participant, names::kComponentRequest,
+                                                            transport::default_qos_for_topic(names::kComponentRequest));
+  } catch (const std::exception& e) {
+    if (conn.options.security.empty()) throw;
+    throw std::runtime_error(std::string(e.what()) +
+                             ": this identity may not send requests (the plumb-operator identity may: docs/security.md)");
+  }
+}
+
 }  // namespace
 
 ComponentClient::ComponentClient(const components::TransportOptions& transport, double wait_s)
     : conn_(components::connect(transport, "plumb-component")),
       replies_(transport::make_reader<topics::ComponentReply>(*conn_.participant, names::kComponentReply,
                                                               transport::default_qos_for_topic(names::kComponentReply))),
-      requests_(transport::make_writer<topics::ComponentRequest>(*conn_.participant, names::kComponentRequest,
-                                                                 transport::default_qos_for_topic(names::kComponentRequest))),
+      requests_(make_request_writer(conn_)),
       wait_s_(wait_s),
       client_(make_client_id()) {}
 
@@ -86,7 +99,8 @@ std::string ComponentClient::no_answer(const std::string& host) {
   std::ostringstream out;
   out << "no estimator host named '" << host << "' answered within " << wait_s_ << " s on domain "
       << conn_.options.domain_id << " (" << conn_.transport->name() << "): "
-      << (seen.empty() ? std::string("no estimator host answers (is plumb-estimator running, on this --domain?)")
+      << (seen.empty() ? std::string("no estimator host answers (is plumb-estimator running, on this --domain?") +
+                             (conn_.options.security.empty() ? " A secured host answers secured clients only: --security)" : ")")
                        : "hosts seen: " + seen + " (plumb-estimator --name)");
   return out.str();
 }
