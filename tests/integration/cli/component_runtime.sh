@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Plugins loaded, re-tuned and unloaded in a running estimator host (plumb component, plumb param):
-# plumb-sim -> plumb-estimator --plugin static on transport H; the plumb commands and the echoes on
-# transport C. integral is loaded while static runs, its window set from 2 s to 1 s, then unloaded;
-# static's windows go on back to back through all of it (none missing, none cut short); integral's
-# change applies from its next window; a refused value gets the words plumb-estimator --param gives.
+# plumb-sim -> plumb-estimator --plugin static --plugin compensated on transport H; the plumb
+# commands and the echoes on transport C. integral is loaded as a third plugin while the tool turns,
+# its window set from 2 s to 1 s, then unloaded; static's and compensated's windows go on back to
+# back through all of it (none missing, none cut short); integral's change applies from its next
+# window; a refused value gets the words plumb-estimator --param gives.
 # usage: component_runtime.sh BIN_DIR H C DOMAIN
 set -uo pipefail
 bin=$1 host_t=$2 cli_t=$3
@@ -20,12 +21,12 @@ rows() { local n; n=$(grep -c . "$1" 2>/dev/null) || n=0; echo $((n > 0 ? n - 1 
 wait_rows() { for _ in $(seq 600); do [ "$(rows "$1")" -ge "$2" ] && return 0; sleep 0.1; done; return 1; }
 
 # Line-buffered: the checks read the files while the echoes run (a file's stdout is block-buffered).
-for p in static integral; do
+for p in static compensated integral; do
   stdbuf -oL "$bin/plumb" topic echo plumb/attitude/$p --csv --transport "$cli_t" --timeout 120 > $p.csv 2> echo_$p.out &
   pids+=($!)
 done
 "$bin/plumb-estimator" --transport "$host_t" --name "$name" --input plumb/sensor/raw --reliable --plugin static \
-  --window 2 --quiet > host.out 2>&1 &
+  --plugin compensated --window 2 --quiet > host.out 2>&1 &
 host=$!
 pids+=($host)
 # 100 Hz, three times real time: a 2 s window every 0.67 s; stopped once the checks are done.
@@ -35,8 +36,9 @@ sim=$!
 pids+=($sim)
 
 wait_rows static.csv 2 || fail "static published no estimate"
-output_matches "^$name  *static  *plumb/attitude/static" plumb_c component list "$name" &&
-  pass "component list $name: static" || fail "component list: $(plumb_c component list "$name" 2>&1)"
+out=$(plumb_c component list "$name" 2>&1)
+grep -q "^$name  *static  *plumb/attitude/static" <<< "$out" && grep -q "^$name  *compensated  *plumb/attitude/compensated" <<< "$out" &&
+  pass "component list $name: static, compensated" || fail "component list: $(plumb_c component list "$name" 2>&1)"
 out=$(plumb_c component load "$name" integral 2>&1) && pass "component load: $out" || fail "component load: $out"
 wait_rows integral.csv 3 || fail "integral published fewer than 3 estimates after its load"
 out=$(plumb_c param set "$name" integral window 1 2>&1) && pass "param set window 1: $out" || fail "param set: $out"
@@ -69,7 +71,8 @@ wait_rows static.csv $((n_static + 4)) || fail "static stopped after the unload"
 [ "$(rows integral.csv)" -eq "$n_integral" ] && pass "integral's topic stopped at the unload ($n_integral estimates)" ||
   fail "integral still publishing after the unload: $n_integral -> $(rows integral.csv)"
 out=$(plumb_c component list "$name" 2>&1)
-grep -q static <<< "$out" && ! grep -q integral <<< "$out" && pass "component list after the unload: static only" ||
+grep -q static <<< "$out" && grep -q compensated <<< "$out" && ! grep -q integral <<< "$out" &&
+  pass "component list after the unload: static, compensated" ||
   fail "component list after the unload: $out"
 expect_failure "a host that does not exist" "no estimator host named 'nobody' answered .*hosts seen: .*$name" \
   plumb_c component list nobody --wait 2
@@ -80,6 +83,8 @@ for p in "${pids[@]}"; do kill -INT "$p" 2>/dev/null; done; wait 2>/dev/null
 
 out=$(python3 "$here/component_windows.py" static.csv --sample-period 0.01 --length 2 --min-rows 10) &&
   pass "static across load, set, unload: $out" || fail "static: $out"
+out=$(python3 "$here/component_windows.py" compensated.csv --sample-period 0.01 --length 2 --min-rows 10) &&
+  pass "compensated across load, set, unload: $out" || fail "compensated: $out"
 out=$(python3 "$here/component_windows.py" integral.csv --sample-period 0.01 --length 2 --then-length 1 --min-rows 6) &&
   pass "integral: $out" || fail "integral: $out"
 grep -q "(0 lost in transit," host.out && pass "host: no sample lost" || fail "host: $(grep 'lost in transit' host.out)"
