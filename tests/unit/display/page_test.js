@@ -49,8 +49,8 @@ check(depthText({md: 10, flags: 0}, 1, "m") === "" && depthText(undefined, 1, "m
 // Two plugins of one tool: each against the tool's reference (first by name), angles wrapped,
 // sigmas combined, an angle that either does not give left out, stale estimates ignored.
 {
-  const att = (k, tool, est, inc, azi, gtf, flags, rx) => ({k, tool, est, inc, azi, gtf, flags, rx,
-                                                          sinc: 0.03, sazi: 0.3, stf: 0.4});
+  const att = (k, tool, est, inc, azi, gtf, flags, rx, t = 10) => ({k, tool, est, inc, azi, gtf, flags, rx, t,
+                                                                  sinc: 0.03, sazi: 0.3, stf: 0.4});
   const d = differences([att("sim/static", "sim", "static", 2.0, 359, 10, 7, 1000),
                          att("sim/integral", "sim", "integral", 2.05, 1, 350, 7, 1000),
                          att("sim/compensated", "sim", "compensated", 1.98, 0, 10, 3, 1000),
@@ -66,6 +66,15 @@ check(depthText({md: 10, flags: 0}, 1, "m") === "" && depthText(undefined, 1, "m
   const s = d.get("sim/static");
   check(Math.abs(s.azi.d + 1) < 1e-9, "azimuth 359 minus 0 wraps to -1: " + s.azi.d);
   check(!d.has("sim/zz"), "a stale estimate is left out");
+  // The toolface at the window's end: carried to the reference's window end with the plugin's rpm.
+  const turning = (k, est, gtf, t) => Object.assign(att(k, "a", est, 2, 10, gtf, 7, 1000, t), {rpm: 10});
+  const same = differences([turning("a/x", "x", 350, 10), turning("a/y", "y", 10, 10)], 1000, 5000);
+  check(Math.abs(same.get("a/y").tf.d - 20) < 1e-9, "toolface 10 minus 350 is +20: " + JSON.stringify(same.get("a/y").tf));
+  const later = differences([turning("a/x", "x", 350, 10), turning("a/y", "y", 10, 10.5)], 1000, 5000);
+  check(Math.abs(later.get("a/y").tf.d + 10) < 1e-9, "10 at 10.5 s, turning 10 rpm, was -20 at 10 s: -10 from 350: " +
+        JSON.stringify(later.get("a/y").tf));
+  const apart = differences([turning("a/x", "x", 350, 10), turning("a/y", "y", 10, 11.5)], 1000, 5000);
+  check(apart.get("a/y").tf === null && apart.get("a/y").inc !== null, "windows ending more than 1 s apart: no toolface");
   check(differenceText(i) === "minus compensated: inclination +0.070 ± 0.042°, azimuth +1.00 ± 0.42°, toolface -",
         differenceText(i));
   check(differenceText(undefined) === "", "no difference: no text");
