@@ -124,6 +124,7 @@ class Host {
   std::map<std::string, std::optional<double>> last_t_;  // tool id -> time of its last sample
   std::uint64_t new_runs_ = 0;
   bool checked_gyro_ = false;
+  std::optional<bool> stream_has_gyro_;  // known from the first samples: a plugin loaded later is told too
 };
 
 components::CounterList Host::counters() const {
@@ -198,6 +199,8 @@ topics::ComponentReply Host::handle(const topics::ComponentRequest& r) {
         runner.reconfigure(plugin, parameters, publisher_for(tool));  // a new slot: nothing open to end
       });
       reply.message = "loaded " + plugin + ", publishing on " + transport::topic_names::attitude(plugin);
+      if (lineup_.find(plugin)->info.uses_gyro && stream_has_gyro_ == false)
+        reply.message += "; it needs gyros, and " + o_.input_topic + " carries none";
     } else if (r.verb == "unload") {
       lineup_.unload(plugin);
       for_each_runner([&](const std::string& tool, estimator::Runner& runner) { runner.remove(plugin, publisher_for(tool)); });
@@ -241,6 +244,7 @@ void Host::serve_requests() {
 // Said once, at the first samples: a plugin that needs gyros on a topic that carries none.
 void Host::check_gyro(const estimator::Runner& runner, const std::vector<Sample>& chunk) {
   if (checked_gyro_) return;
+  stream_has_gyro_ = (chunk.front().flags & flags::kHasGyro) != 0;
   for (const auto& name : runner.needing_gyro())
     if ((chunk.front().flags & flags::kHasGyro) == 0)
       std::cerr << "plumb-estimator: " << name << " needs gyros, and " << o_.input_topic << " carries none" << std::endl;

@@ -33,10 +33,13 @@ void print_value(const topics::ComponentReply& reply) {
   for (const auto& row : reply.rows) std::cout << row.value << std::endl;
 }
 
+// An empty value is one the plugin works out itself (strapdown's gravity from the data, ...).
+std::string shown_value(const std::string& value) { return value.empty() ? "(none: the plugin's own)" : value; }
+
 void print_parameters(const topics::ComponentReply& reply) {
   for (const auto& row : reply.rows)
-    std::cout << row.name << " = " << row.value << (row.value == row.default_value ? "" : "  (default " + row.default_value + ")")
-              << '\n';
+    std::cout << row.name << " = " << shown_value(row.value)
+              << (row.value == row.default_value ? "" : "  (default " + shown_value(row.default_value) + ")") << '\n';
   std::cout << std::flush;
 }
 
