@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "addresses.hpp"
+#include "attitude_difference.hpp"
 #include "dds_feed.hpp"
 #include "foxglove_feed.hpp"
 #include "foxglove_hub.hpp"
@@ -46,7 +47,14 @@ int run(const Options& o) {
     foxglove_hub.emplace(fo);
   }
   auto conn = components::connect(o.transport, "plumb-display");
-  DdsFeed feed(*conn.participant, hub);
+  // Two or more plugins of one tool: their differences on Foxglove too (the page computes its own).
+  std::optional<FoxgloveDifferences> differences;
+  DdsFeed::AttitudeObserver observe_attitude;
+  if (foxglove_hub) {
+    differences.emplace(*foxglove_hub);
+    observe_attitude = [&differences](const topics::Attitude& a, double rx_ms) { differences->attitude(a, rx_ms); };
+  }
+  DdsFeed feed(*conn.participant, hub, observe_attitude);
   // The servers start after DDS: a port that is taken ends the program before anyone connects to it.
   WebServer server(o.web, hub);
   std::optional<FoxgloveServer> foxglove_server;
