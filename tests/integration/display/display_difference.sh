@@ -3,7 +3,8 @@
 # (issue 37 item 4): plumb-sim and plumb-estimator --plugin compensated (transport H) -> plumb
 # component load integral, then static (the commands and plumb-display on transport D) -> headless
 # Chromium: integral's card shows its difference from compensated, small and live; static's (no
-# angle while turning) shows "-" for each; compensated's none. Exit 77 without Chromium.
+# angle while turning) shows "-" for each; compensated's none; and a plain Foxglove client gets
+# integral's difference on plumb-display/difference/rig1/integral. Exit 77 without Chromium.
 # usage: display_difference.sh BIN_DIR H D DOMAIN ARTIFACT_DIR
 set -uo pipefail
 bin=$1 host_t=$2 display_t=$3
@@ -22,8 +23,9 @@ name=diff-host-$4
 
 "$bin/plumb-display" --transport "$display_t" --port 0 --foxglove-port 0 > "$work/display.log" 2>&1 &
 pids+=($!)
-wait_for "$work/display.log" "serving http://127.0.0.1:[0-9]+/" 20 || { cat "$work/display.log"; fail "plumb-display did not start"; finish; }
+wait_for "$work/display.log" "Foxglove on ws://127.0.0.1:[0-9]+/" 20 || { cat "$work/display.log"; fail "plumb-display did not start"; finish; }
 port=$(sed -nE 's|.*serving http://127\.0\.0\.1:([0-9]+)/.*|\1|p' "$work/display.log" | head -1)
+fox_port=$(sed -nE 's|.*Foxglove on ws://127\.0\.0\.1:([0-9]+)/.*|\1|p' "$work/display.log" | head -1)
 
 # I = 2 deg, A = 200 deg, 240 rpm: compensated and integral both valid on 0.5 s windows, static never.
 "$bin/plumb-estimator" --transport "$host_t" --name "$name" --input plumb/sensor/raw --plugin compensated \
@@ -43,5 +45,9 @@ rc=$?
 cat "$work/browser.log"
 [ $rc -eq 77 ] && exit 77
 [ $rc -eq 0 ] || fail "browser checks (exit $rc)"
+# The same difference on the display's Foxglove server, a JSON channel of its own.
+python3 "$here/foxglove_difference.py" "ws://127.0.0.1:$fox_port/" rig1 integral compensated --inc-tol 0.1 --azi-tol 1.5 \
+  > "$work/foxglove.log" 2>&1 || fail "Foxglove difference channel"
+cat "$work/foxglove.log"
 [ $fails -eq 0 ] || { tail -5 "$work/host.log"; tail -5 "$work/display.log"; }
 finish
