@@ -37,7 +37,12 @@ void ComponentService::answer(const topics::ComponentRequest& request, topics::C
   replies_.write(reply);
   ++answered_;
   if (reply.result != topics::COMPONENT_DONE) ++refused_;
-  last_[request.client] = {request.request_id, std::move(reply)};
+  if (last_.insert_or_assign(request.client, std::pair{request.request_id, std::move(reply)}).second)
+    order_.push_back(request.client);
+  if (order_.size() > kKeptClients) {
+    last_.erase(order_.front());
+    order_.pop_front();
+  }
 }
 
 }  // namespace plumb::estimator_component

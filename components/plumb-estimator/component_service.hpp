@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <string>
 #include <utility>
@@ -30,7 +31,12 @@ class ComponentService {
   std::string name_;
   transport::Reader<topics::ComponentRequest> requests_;
   transport::Writer<topics::ComponentReply> replies_;
-  std::map<std::string, std::pair<std::uint64_t, topics::ComponentReply>> last_;  // client -> its last request, reply
+  // client -> its last request id and reply, for a repeat; the clients of the last kKeptClients
+  // requests only (each `plumb` command is a client of its own: a host that runs for months must
+  // not keep them all).
+  static constexpr std::size_t kKeptClients = 64;
+  std::map<std::string, std::pair<std::uint64_t, topics::ComponentReply>> last_;
+  std::deque<std::string> order_;  // clients in last_, oldest first
   std::uint64_t answered_ = 0;
   std::uint64_t refused_ = 0;
 };
