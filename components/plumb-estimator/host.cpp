@@ -169,17 +169,6 @@ template <class F> void Host::for_each_runner(F&& f) {
 
 namespace {
 
-std::vector<std::string> split_assignments(const std::string& text) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const auto end = std::min(text.find(';', start), text.size());
-    if (end > start) out.push_back(text.substr(start, end - start));
-    start = end + 1;
-  }
-  return out;
-}
-
 topics::ComponentParameter row_of(const Lineup::Value& v) { return {v.plugin, v.name, v.value, v.default_value}; }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "lineup.hpp"
 
+#include <algorithm>
+
 #include "plumb/core/edit_distance.hpp"
 #include "plumb/estimator/assignments.hpp"
 #include "plumb/estimator/loader.hpp"
@@ -8,6 +10,17 @@ namespace plumb::estimator_component {
 
 using estimator::ParameterError;
 using estimator::Parameters;
+
+std::vector<std::string> split_assignments(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const auto end = std::min(text.find(';', start), text.size());
+    if (end > start) out.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return out;
+}
 
 Lineup::Lineup(const std::vector<std::string>& plugins, const std::vector<std::string>& assignments, double window_s)
     : window_s_(window_s) {

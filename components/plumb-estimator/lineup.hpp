@@ -11,6 +11,10 @@
 
 namespace plumb::estimator_component {
 
+// A load request's assignments as they travel (ComponentRequest.value: "KEY=VALUE;PLUGIN.KEY=VALUE"),
+// back to the --param list; empty pieces are skipped.
+std::vector<std::string> split_assignments(const std::string& text);
+
 class Lineup {
  public:
   struct Entry {

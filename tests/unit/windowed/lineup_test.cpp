@@ -69,6 +69,14 @@ TEST(Lineup, LoadsWithTheHostsWindowAndRefusesTwiceOrUnknown) {
   EXPECT_EQ(lineup.make_runner().slots().size(), 2u);
 }
 
+TEST(Lineup, LoadAssignmentsTravelSemicolonSeparated) {
+  EXPECT_EQ(split_assignments("a=1;integral.window=2"), (std::vector<std::string>{"a=1", "integral.window=2"}));
+  EXPECT_EQ(split_assignments(""), std::vector<std::string>{});
+  EXPECT_EQ(split_assignments(";a=1;;"), std::vector<std::string>{"a=1"});
+  Lineup lineup({"static"}, {}, 2);
+  EXPECT_EQ(lineup.load("integral", split_assignments("max_model_error_deg=3;window=4")).at("window"), "4");
+}
+
 TEST(Lineup, UnloadsALoadedPluginButNeverTheLast) {
   Lineup lineup({"static", "integral"}, {}, 2);
   EXPECT_NE(lineup_refusal([&] { lineup.unload("integrall"); }).find("not loaded (loaded: static, integral): did you mean integral"),
