@@ -1,6 +1,7 @@
 #include "dds_feed.hpp"
 
 #include <chrono>
+#include <type_traits>
 
 #include "json.hpp"
 #include "plumb/transport/topic_names.hpp"
@@ -17,7 +18,7 @@ bool starts_with(const std::string& s, const char* prefix) { return s.rfind(pref
 
 struct DdsFeed::Stream {
   virtual ~Stream() = default;
-  virtual std::size_t drain(Hub& hub) = 0;
+  virtual std::size_t drain(Hub& hub, const AttitudeObserver& observer) = 0;
 };
 
 namespace {
@@ -26,11 +27,15 @@ template <class M> class TypedStream final : public DdsFeed::Stream {
  public:
   explicit TypedStream(transport::Reader<M> reader) : reader_(std::move(reader)) {}
 
-  std::size_t drain(Hub& hub) override {
+  std::size_t drain(Hub& hub, const DdsFeed::AttitudeObserver& observer) override {
     std::size_t n = 0;
     while (reader_.take(taken_, kTakeBatch) > 0) {
       const double rx = wall_clock_ms();
-      for (const M& m : taken_) deliver(hub, m, rx);
+      for (const M& m : taken_) {
+        deliver(hub, m, rx);
+        if constexpr (std::is_same_v<M, topics::Attitude>)
+          if (observer) observer(m, rx);
+      }
       n += taken_.size();
     }
     return n;
@@ -67,7 +72,8 @@ template <class M> class TypedStream final : public DdsFeed::Stream {
 
 }  // namespace
 
-DdsFeed::DdsFeed(transport::Participant& participant, Hub& hub) : participant_(participant), hub_(hub) {
+DdsFeed::DdsFeed(transport::Participant& participant, Hub& hub, AttitudeObserver observer)
+    : participant_(participant), hub_(hub), observer_(std::move(observer)) {
   const std::string status = transport::topic_names::kStatus;
   streams_.push_back(std::make_unique<TypedStream<topics::ComponentStatus>>(transport::make_reader<topics::ComponentStatus>(
       participant_, status, transport::default_qos_for_topic(status), [this] { wake(); })));
@@ -123,7 +129,7 @@ std::size_t DdsFeed::poll(std::chrono::milliseconds timeout) {
     pending_ = false;
   }
   std::size_t n = 0;
-  for (auto& s : streams_) n += s->drain(hub_);
+  for (auto& s : streams_) n += s->drain(hub_, observer_);
   return n;
 }
 

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <set>
@@ -20,7 +21,10 @@ namespace plumb::display_component {
 
 class DdsFeed {
  public:
-  DdsFeed(transport::Participant& participant, Hub& hub);
+  // Called on the feed's thread with every attitude taken and when (ms since the epoch): the
+  // Foxglove differences (attitude_difference.hpp).
+  using AttitudeObserver = std::function<void(const topics::Attitude&, double rx_ms)>;
+  DdsFeed(transport::Participant& participant, Hub& hub, AttitudeObserver observer = {});
   ~DdsFeed();
   // Waits up to `timeout` for data, hands everything taken to the hub, and every half second
   // subscribes to topics that appeared. Returns how many messages it took.
@@ -35,6 +39,7 @@ class DdsFeed {
 
   transport::Participant& participant_;
   Hub& hub_;
+  AttitudeObserver observer_;
   // Before the readers: a vendor thread may call wake() until the last reader is gone.
   std::mutex mutex_;
   std::condition_variable cv_;

@@ -91,7 +91,8 @@ FoxgloveHub::FoxgloveHub(FoxgloveOptions options) : options_(std::move(options))
   if (options_.queue == 0) throw std::invalid_argument("the Foxglove queue must hold at least one message");
 }
 
-std::uint32_t FoxgloveHub::advertise(const std::string& topic, const std::string& schema_name, const std::string& schema) {
+std::uint32_t FoxgloveHub::advertise(const std::string& topic, const std::string& schema_name, const std::string& schema,
+                                     const std::string& encoding, const std::string& schema_encoding) {
   std::lock_guard lock(mutex_);
   auto known = known_.find(topic);
   if (known != known_.end() && (known->second.schema_name != schema_name || known->second.schema != schema)) {
@@ -104,6 +105,8 @@ std::uint32_t FoxgloveHub::advertise(const std::string& topic, const std::string
     c.topic = topic;
     c.schema_name = schema_name;
     c.schema = schema;
+    c.encoding = encoding;
+    c.schema_encoding = schema_encoding;
     known = known_.emplace(topic, std::move(c)).first;
   }
   const foxglove::Channel& c = known->second;

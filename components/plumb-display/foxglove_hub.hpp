@@ -82,7 +82,9 @@ class FoxgloveHub {
   // DDS side. advertise() returns the channel's id: the same one again for a topic that comes back
   // with the same type (the protocol allows the reuse only then). Messages of a channel nobody
   // subscribed to are not asked for (wanted() says which are).
-  std::uint32_t advertise(const std::string& topic, const std::string& schema_name, const std::string& schema);
+  // A channel the display makes itself (not a DDS topic) gives its own encodings ("json", "jsonschema").
+  std::uint32_t advertise(const std::string& topic, const std::string& schema_name, const std::string& schema,
+                          const std::string& encoding = "cdr", const std::string& schema_encoding = "omgidl");
   void unadvertise(const std::string& topic);
   void publish(std::uint32_t channel_id, std::uint64_t receive_ns, const CdrBytes& cdr);
   // Channels with at least one subscription: the DDS side reads only those topics.

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "addresses.hpp"
+#include "attitude_difference.hpp"
 #include "dds_feed.hpp"
 #include "foxglove_feed.hpp"
 #include "foxglove_hub.hpp"
@@ -48,7 +49,14 @@ int run(const Options& o) {
     foxglove_hub.emplace(fo);
   }
   auto conn = components::connect(o.transport, "plumb-display");
-  DdsFeed feed(*conn.participant, hub);
+  // Two or more plugins of one tool: their differences on Foxglove too (the page computes its own).
+  std::optional<FoxgloveDifferences> differences;
+  DdsFeed::AttitudeObserver observe_attitude;
+  if (foxglove_hub) {
+    differences.emplace(*foxglove_hub);
+    observe_attitude = [&differences](const topics::Attitude& a, double rx_ms) { differences->attitude(a, rx_ms); };
+  }
+  DdsFeed feed(*conn.participant, hub, observe_attitude);
   // The servers start after DDS. One whose port is taken is said, and the other serves alone (a
   // display that still shows something beats none on a rig); with neither, the program ends.
   std::vector<std::string> refusals;

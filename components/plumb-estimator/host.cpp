@@ -14,7 +14,9 @@
 #include <string>
 #include <utility>
 
+#include "component_service.hpp"
 #include "estimate_line.hpp"
+#include "lineup.hpp"
 
 #include "plumb/components/status_reporter.hpp"
 #include "plumb/estimator/loader.hpp"
@@ -64,11 +66,13 @@ class Host {
   // before anything runs; every further tool gets a copy made the same way.
   explicit Host(const HostOptions& o)
       : o_(o),
-        first_runner_(make_runner()),
+        lineup_(o.plugins, o.params, o.window_s),
+        first_runner_(lineup_.make_runner()),
         conn_(components::connect(o.transport, "plumb-estimator")),
         publication_(*conn_.participant),
         input_(*conn_.participant, {o.input_topic, o.tool_id, o.reliable}),
-        status_(*conn_.participant, "plumb-estimator") {
+        status_(*conn_.participant, "plumb-estimator"),
+        service_(*conn_.participant, o.name.empty() ? components::host_name() : o.name) {
     for (const auto& slot : first_runner_.slots()) publication_.add(slot.name, slot.estimator->info().uses_gyro);
     if (o.compare_truth) truth_ = std::make_unique<TruthLookup>(*conn_.participant, o.truth_topic);
     open_resume_record();
@@ -77,17 +81,11 @@ class Host {
   int run();
 
  private:
-  estimator::Runner make_runner() const {
-    estimator::Runner r = estimator::load_runner(o_.plugins);
-    r.configure(o_.params, o_.window_s);
-    return r;
-  }
-
   estimator::Runner& runner_for(const std::string& tool) {
     auto it = runners_.find(tool);
     if (it != runners_.end()) return it->second;
     if (runners_.empty()) return runners_.emplace(tool, std::move(first_runner_)).first->second;
-    return runners_.emplace(tool, make_runner()).first->second;
+    return runners_.emplace(tool, lineup_.make_runner()).first->second;
   }
 
   estimator::Runner::Sink publisher_for(const std::string& tool) {
@@ -113,14 +111,20 @@ class Host {
   void push_chunk(const std::string& tool, std::vector<Sample>& chunk);
   void flush_idle();
   int summarise();
+  // plumb component / plumb param: applied here, between two pushes, so at a window boundary.
+  void serve_requests();
+  topics::ComponentReply handle(const topics::ComponentRequest& request);
+  template <class F> void for_each_runner(F&& f);
 
   const HostOptions& o_;
+  Lineup lineup_;  // the plugins and their parameters now: a new tool's runner starts from it
   estimator::Runner first_runner_;
   std::map<std::string, estimator::Runner> runners_;  // tool id -> its runner
   components::Connection conn_;
   EstimatePublication publication_;
   SensorSubscription input_;
   components::StatusReporter status_;
+  ComponentService service_;
   std::unique_ptr<TruthLookup> truth_;
   std::optional<ResumeFile> resume_;
   bool said_resume_failure_ = false;
@@ -128,6 +132,7 @@ class Host {
   std::map<std::string, std::optional<double>> last_t_;  // tool id -> time of its last sample
   std::uint64_t new_runs_ = 0;
   bool checked_gyro_ = false;
+  std::optional<bool> stream_has_gyro_;  // known from the first samples: a plugin loaded later is told too
 };
 
 // The previous instance's record: where each tool stood when it last took samples.
@@ -157,6 +162,8 @@ void Host::save_resume_record() {
 components::CounterList Host::counters() const {
   components::CounterList all = input_.counters();
   all.emplace_back("new_runs", new_runs_);
+  all.emplace_back("requests", service_.answered());
+  all.emplace_back("requests_refused", service_.refused());
   // Summed over the tools, in the plugins' order: the per-plugin counters keep their names.
   const std::size_t own = all.size();
   if (runners_.empty())
@@ -184,12 +191,81 @@ void Host::announce() const {
             << (o_.tool_id.empty() ? " (each tool separately)" : " (tool '" + o_.tool_id + "' only)") << ", plugins:";
   for (const auto& slot : first_runner_.slots())
     std::cerr << ' ' << slot.name << " -> " << transport::topic_names::attitude(slot.name);
-  std::cerr << std::endl;
+  std::cerr << "; host '" << service_.name() << "' for plumb component and plumb param" << std::endl;
+}
+
+template <class F> void Host::for_each_runner(F&& f) {
+  if (runners_.empty()) f(std::string(), first_runner_);  // no tool yet: the runner the first one gets
+  for (auto& [tool, runner] : runners_) f(tool, runner);
+}
+
+namespace {
+
+topics::ComponentParameter row_of(const Lineup::Value& v) { return {v.plugin, v.name, v.value, v.default_value}; }
+
+}  // namespace
+
+topics::ComponentReply Host::handle(const topics::ComponentRequest& r) {
+  topics::ComponentReply reply;
+  const std::string& plugin = r.plugin;
+  try {
+    if (r.verb == "list") {
+      for (const auto& e : lineup_.entries()) reply.rows.push_back({e.name, "", e.info.version, e.info.description});
+      reply.message = std::to_string(lineup_.entries().size()) + " plugin(s)";
+    } else if (r.verb == "load") {
+      const estimator::Parameters parameters = lineup_.load(plugin, split_assignments(r.value));
+      publication_.add(plugin, lineup_.find(plugin)->info.uses_gyro);
+      for_each_runner([&](const std::string& tool, estimator::Runner& runner) {
+        runner.add(plugin, estimator::load_estimator(plugin));
+        runner.reconfigure(plugin, parameters, publisher_for(tool));  // a new slot: nothing open to end
+      });
+      reply.message = "loaded " + plugin + ", publishing on " + transport::topic_names::attitude(plugin);
+      if (lineup_.find(plugin)->info.uses_gyro && stream_has_gyro_ == false)
+        reply.message += "; it needs gyros, and " + o_.input_topic + " carries none";
+    } else if (r.verb == "unload") {
+      lineup_.unload(plugin);
+      for_each_runner([&](const std::string& tool, estimator::Runner& runner) { runner.remove(plugin, publisher_for(tool)); });
+      publication_.retire(plugin);
+      reply.message = "unloaded " + plugin + " (its open window published)";
+    } else if (r.verb == "set") {
+      const estimator::Parameters parameters = lineup_.set(plugin, r.name, r.value);
+      for_each_runner([&](const std::string& tool, estimator::Runner& runner) {
+        runner.reconfigure(plugin, parameters, publisher_for(tool));
+      });
+      reply.message = plugin + "." + r.name + " = " + r.value + " from the next window (the open one published)";
+    } else if (r.verb == "get") {
+      reply.rows.push_back(row_of(lineup_.get(plugin, r.name)));
+    } else if (r.verb == "dump") {
+      for (const auto& v : lineup_.dump(plugin)) reply.rows.push_back(row_of(v));
+      if (reply.rows.size() > topics::ComponentReply::kRowsMax) reply.rows.resize(topics::ComponentReply::kRowsMax);
+    } else {
+      throw std::invalid_argument("unknown request '" + r.verb + "' (list, load, unload, get, set, dump)");
+    }
+    reply.result = topics::COMPONENT_DONE;
+  } catch (const std::exception& e) {
+    reply.result = topics::COMPONENT_REFUSED;
+    reply.message = e.what();
+  }
+  return reply;
+}
+
+void Host::serve_requests() {
+  for (const auto& request : service_.take()) {
+    topics::ComponentReply reply = handle(request);
+    std::string what = request.verb + (request.plugin.empty() ? "" : " " + request.plugin) +
+                       (request.name.empty() ? "" : " " + request.name) + (request.verb == "set" ? " " + request.value : "");
+    std::cerr << "plumb-estimator: " << what << " (from " << request.client << "): "
+              << (reply.result == topics::COMPONENT_DONE ? reply.message.empty() ? std::string("done") : reply.message : "refused: " + reply.message)
+              << std::endl;
+    service_.answer(request, std::move(reply));
+  }
+  publication_.sweep();
 }
 
 // Said once, at the first samples: a plugin that needs gyros on a topic that carries none.
 void Host::check_gyro(const estimator::Runner& runner, const std::vector<Sample>& chunk) {
   if (checked_gyro_) return;
+  stream_has_gyro_ = (chunk.front().flags & flags::kHasGyro) != 0;
   for (const auto& name : runner.needing_gyro())
     if ((chunk.front().flags & flags::kHasGyro) == 0)
       std::cerr << "plumb-estimator: " << name << " needs gyros, and " << o_.input_topic << " carries none" << std::endl;
@@ -274,6 +350,7 @@ int Host::run() {
       last_sample_time = Clock::now();
       next_silence_note_s = 5;
     }
+    serve_requests();
     const double silent_s = seconds_since(last_sample_time);
     if (pending && o_.idle_flush_s > 0 && silent_s > o_.idle_flush_s) {
       flush_idle();

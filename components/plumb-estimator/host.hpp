@@ -13,6 +13,7 @@ namespace plumb::estimator_component {
 struct HostOptions {
   components::TransportOptions transport;
   std::vector<std::string> plugins;
+  std::string name;  // what `plumb component` and `plumb param` call this host; "" -> the computer's host name
   std::string input_topic = transport::topic_names::kSensorCalibrated;
   double window_s = 10;
   std::vector<std::string> params;

@@ -16,6 +16,9 @@ int main(int argc, char** argv) {
   CLI::App app{"plumb-estimator: run estimator plugins side by side on a sensor topic; publish plumb/attitude/<plugin>"};
   components::add_transport_options(app, o.transport);
   app.add_option("-p,--plugin,--estimator", o.plugins, "estimator plugin (repeat for several; see `plumb plugins`; --estimator, as for plumb estimate, is the same)")->required();
+  app.add_option("--name", o.name,
+                 "what `plumb component` and `plumb param` call this host (default: the computer's host name; give "
+                 "each host on one computer its own)");
   app.add_option("--input", o.input_topic, "sensor topic to read")->capture_default_str();
   app.add_option("-w,--window", o.window_s, "window length in seconds for windowed plugins")->capture_default_str();
   components::add_param_option(app, o.params);

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   plumb::cli::add_survey_verb(app, verbs);
   plumb::cli::add_clearance_verb(app, verbs);
   plumb::cli::add_status_verb(app, verbs);
+  plumb::cli::add_component_verbs(app, verbs);
   plumb::cli::add_config_verbs(app, verbs);
   plumb::cli::add_security_verbs(app, verbs);
   plumb::cli::add_launch_verb(app, verbs);

@@ -34,6 +34,7 @@ void add_recording_verbs(CLI::App& app, Verbs& verbs); // record (and --repair),
 void add_survey_verb(CLI::App& app, Verbs& verbs);     // survey (offline: stations, QC, minimum curvature, uncertainty)
 void add_clearance_verb(CLI::App& app, Verbs& verbs);  // clearance (offline anti-collision: ISCWSA separation factor)
 void add_status_verb(CLI::App& app, Verbs& verbs);     // status (components seen on the network)
+void add_component_verbs(CLI::App& app, Verbs& verbs); // component list | load | unload, param get | set | dump (a running estimator host)
 void add_config_verbs(CLI::App& app, Verbs& verbs);    // config check (DDS XML files for other applications)
 void add_security_verbs(CLI::App& app, Verbs& verbs);  // security create-keystore | create-identity | create-permissions | check
 void add_launch_verb(CLI::App& app, Verbs& verbs);     // launch (a set of plumb programs from a launch file)

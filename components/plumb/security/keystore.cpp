@@ -246,9 +246,10 @@ std::optional<Grant> default_grant(const std::string& name) {
   static const std::map<std::string, Grant> grants{
       {"plumb-sim", {{"plumb/sensor/*", "plumb/sim/truth", "plumb/depth", "plumb/status"}, {}}},
       {"plumb-bridge", {{"plumb/sensor/*", "plumb/status"}, {"plumb/sensor/*", "plumb/calibration"}}},
+      // plumb/component/*: answers plumb component and plumb param (an operator's requests).
       {"plumb-estimator",
-       {{"plumb/attitude/*", "plumb/navigation/*", "plumb/status"},
-        {"plumb/sensor/*", "plumb/depth", "plumb/sim/truth", "plumb/calibration"}}},
+       {{"plumb/attitude/*", "plumb/navigation/*", "plumb/status", "plumb/component/reply"},
+        {"plumb/sensor/*", "plumb/depth", "plumb/sim/truth", "plumb/calibration", "plumb/component/request"}}},
       {"plumb-calibrate", {{"plumb/calibration", "plumb/sensor/raw", "plumb/status"}, {"plumb/sensor/*"}}},
       // The sensor topic: the depth clock's estimate matches the stops it sees with the depth's.
       {"plumb-survey",
@@ -259,6 +260,9 @@ std::optional<Grant> default_grant(const std::string& name) {
       {"plumb-display", {{"plumb/status"}, {"plumb/*"}}},
       // The plumb tool as an operator's monitor (topic echo / hz, status, record): reads everything.
       {"plumb-monitor", {{}, {"plumb/*"}}},
+      // The plumb tool as an operator: a monitor that may also load, unload and tune the estimator
+      // hosts' plugins (plumb component, plumb param). The monitor may not.
+      {"plumb-operator", {{"plumb/component/request"}, {"plumb/*"}}},
   };
   const auto it = grants.find(name);
   if (it == grants.end()) return std::nullopt;
@@ -266,7 +270,7 @@ std::optional<Grant> default_grant(const std::string& name) {
 }
 
 std::string default_grant_names() {
-  return "plumb-sim, plumb-bridge, plumb-estimator, plumb-calibrate, plumb-survey, plumb-wits, plumb-display, plumb-monitor";
+  return "plumb-sim, plumb-bridge, plumb-estimator, plumb-calibrate, plumb-survey, plumb-wits, plumb-display, plumb-monitor, plumb-operator";
 }
 
 }  // namespace plumb::cli

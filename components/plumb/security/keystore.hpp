@@ -40,7 +40,7 @@ void create_identity(const std::string& dir, const std::string& name, const Vali
 // Writes and signs DIR/enclaves/NAME/permissions.xml for the identity's certificate.
 void create_permissions(const std::string& dir, const std::string& name, const Grant& grant, int days);
 // The grant of a plumb component by its identity name (plumb-sim, plumb-bridge, plumb-estimator,
-// plumb-calibrate, plumb-survey, plumb-monitor); nullopt for other names.
+// plumb-calibrate, plumb-survey, plumb-monitor, plumb-operator); nullopt for other names.
 std::optional<Grant> default_grant(const std::string& name);
 // Names default_grant() knows, for messages.
 std::string default_grant_names();

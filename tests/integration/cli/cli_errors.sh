@@ -13,7 +13,8 @@ for exe in plumb plumb-plot plumb-sim plumb-estimator plumb-bridge plumb-calibra
     fail "$exe is not built"
   fi
 done
-for sub in "topic list" "topic echo" "topic hz" "topic pub" transports plugins estimate compare record play info export survey status launch; do
+for sub in "topic list" "topic echo" "topic hz" "topic pub" transports plugins estimate compare record play info export survey status \
+    "component list" "component load" "component unload" "param get" "param set" "param dump" launch; do
   "$bin/plumb" $sub --help > /dev/null 2>&1 && pass "plumb $sub --help" || fail "plumb $sub --help"
 done
 

@@ -13,8 +13,9 @@ class Closed(Exception):
 
 
 class WebSocket:
-    def __init__(self, url, timeout=10.0, receive_buffer=None):
-        """receive_buffer: a small SO_RCVBUF makes a client that stops reading stall its sender at once."""
+    def __init__(self, url, timeout=10.0, receive_buffer=None, protocol=None):
+        """receive_buffer: a small SO_RCVBUF makes a client that stops reading stall its sender at once.
+        protocol: the subprotocol asked for (foxglove.websocket.v1)."""
         u = urllib.parse.urlparse(url)
         self.sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
         if receive_buffer:
@@ -24,7 +25,8 @@ class WebSocket:
         key = base64.b64encode(os.urandom(16)).decode()
         path = (u.path or "/") + ("?" + u.query if u.query else "")
         request = (f"GET {path} HTTP/1.1\r\nHost: {u.hostname}:{u.port}\r\nUpgrade: websocket\r\n"
-                   f"Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\nSec-WebSocket-Version: 13\r\n\r\n")
+                   f"Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\nSec-WebSocket-Version: 13\r\n"
+                   + (f"Sec-WebSocket-Protocol: {protocol}\r\n" if protocol else "") + "\r\n")
         self.sock.sendall(request.encode())
         self.buffer = b""
         while b"\r\n\r\n" not in self.buffer:

@@ -168,5 +168,51 @@ TEST(Runner, AnAngleMarkedInvalidAndAnUnknownSigmaAreNaN) {
   EXPECT_EQ(f.magnetic_toolface_deg, 40);
 }
 
+
+// The estimate times a slot published, for the run-time changes below.
+std::vector<double> times_of(const std::map<std::string, std::vector<double>>& got, const std::string& name) {
+  const auto it = got.find(name);
+  return it == got.end() ? std::vector<double>{} : it->second;
+}
+
+std::vector<Sample> samples_from(int first, int n) {
+  std::vector<Sample> out(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) out[static_cast<std::size_t>(i)].t = first + i, out[static_cast<std::size_t>(i)].f.x() = 1;
+  return out;
+}
+
+// A slot added, re-tuned and removed while samples flow: the other slot's windows go on one after
+// the other, none missing or cut short.
+TEST(Runner, AddReconfigureAndRemoveOneSlotLeaveTheOthersWindowsWhole) {
+  Runner runner;
+  runner.add("a", make(false));
+  runner.configure({{{"every", "4"}}});
+  std::map<std::string, std::vector<double>> got;
+  const auto sink = [&](const Runner::Slot& slot, Estimate& e) { got[slot.name].push_back(e.t_end); };
+  runner.push(samples_from(0, 6), sink);  // a: window ends at t 3; two samples open
+  runner.add("b", make(false));
+  runner.reconfigure("b", {{"every", "3"}}, sink);  // a new slot: nothing open, nothing flushed
+  EXPECT_TRUE(times_of(got, "b").empty());
+  runner.push(samples_from(6, 6), sink);  // b's windows: 6-8, 9-11
+  EXPECT_EQ(times_of(got, "b"), (std::vector<double>{8, 11}));
+  runner.push(samples_from(12, 1), sink);  // b has t 12 open
+  runner.reconfigure("b", {{"every", "2"}}, sink);  // b's open window (t 12) closes now, as a partial
+  ASSERT_EQ(runner.find("b")->parameters.at("every"), "2");
+  runner.push(samples_from(13, 4), sink);  // b: 13-14, 15-16
+  EXPECT_EQ(times_of(got, "b").size(), 5u);  // 8, 11, the partial, 14, 16
+  EXPECT_EQ(times_of(got, "b").back(), 16);
+  EXPECT_TRUE(runner.remove("b", sink));
+  EXPECT_FALSE(runner.remove("b", sink));
+  EXPECT_EQ(runner.find("b"), nullptr);
+  runner.push(samples_from(17, 7), sink);  // up to t 23
+  // a never noticed: one window every 4 samples from the start, t 3, 7, 11, ..., 23.
+  std::vector<double> expected;
+  for (double t = 3; t <= 23; t += 4) expected.push_back(t);
+  EXPECT_EQ(times_of(got, "a"), expected);
+  EXPECT_EQ(runner.slots().size(), 1u);
+  EXPECT_EQ(runner.slots()[0].estimates, expected.size());
+  EXPECT_THROW(runner.reconfigure("nobody", {}, sink), std::out_of_range);
+}
+
 }  // namespace
 }  // namespace plumb::estimator

@@ -1,6 +1,7 @@
 #include "plumb/estimator/runner.hpp"
 
 #include <limits>
+#include <stdexcept>
 
 #include "plumb/estimator/assignments.hpp"
 
@@ -93,6 +94,35 @@ void Runner::flush(const Sink& sink) {
     s.estimator->flush(made_);
     deliver(s, made_, sink);
   }
+}
+
+const Runner::Slot* Runner::find(const std::string& name) const {
+  for (const auto& s : slots_)
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+bool Runner::remove(const std::string& name, const Sink& sink) {
+  for (auto it = slots_.begin(); it != slots_.end(); ++it) {
+    if (it->name != name) continue;
+    it->estimator->flush(made_);
+    deliver(*it, made_, sink);
+    slots_.erase(it);
+    return true;
+  }
+  return false;
+}
+
+void Runner::reconfigure(const std::string& name, const Parameters& parameters, const Sink& sink) {
+  for (auto& s : slots_) {
+    if (s.name != name) continue;
+    s.estimator->flush(made_);
+    deliver(s, made_, sink);
+    s.parameters = parameters;
+    s.estimator->configure(s.parameters);
+    return;
+  }
+  throw std::out_of_range("no estimator '" + name + "' in this runner");
 }
 
 std::vector<std::pair<std::string, std::uint64_t>> Runner::counters() const {

@@ -59,6 +59,19 @@ class Runner {
   //   allocates: as Estimator::flush.
   void flush(const Sink& sink);
 
+  // Changes while samples flow (the estimator host's `plumb component` and `plumb param`): each
+  // touches one slot and leaves every other slot's state, open window and counters as they were.
+  // The slot named `name`, or nullptr. allocates: no.
+  const Slot* find(const std::string& name) const;
+  // Ends the slot's open window (its estimate goes to the sink), then removes the slot; false when
+  // no slot has that name. allocates: as Estimator::flush.
+  bool remove(const std::string& name, const Sink& sink);
+  // Ends the slot's open window (its estimate goes to the sink), then configures the slot's
+  // estimator with `parameters`, so they apply from its next window. Throws ParameterError as
+  // Estimator::configure (validate on a spare instance first: the slot's state is already reset),
+  // std::out_of_range for an unknown name. allocates: yes.
+  void reconfigure(const std::string& name, const Parameters& parameters, const Sink& sink);
+
   //   allocates: no (a reference, valid until the next add).
   const std::vector<Slot>& slots() const { return slots_; }
   //   allocates: yes (infos(), counters() and needing_gyro() build their answer).
