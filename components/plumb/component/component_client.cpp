@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <functional>
 #include <iostream>
 #include <set>
 #include <stdexcept>
@@ -50,46 +51,45 @@ ComponentClient::ComponentClient(const components::TransportOptions& transport, 
       wait_s_(wait_s),
       client_(make_client_id()) {}
 
-std::optional<topics::ComponentReply> ComponentClient::ask(topics::ComponentRequest request) {
+// Sends the request as soon as a host's reader matched, then again every kResendEvery, and hands
+// every reply to it to `take` until `take` has what it wants or `wait_s` is over.
+void ComponentClient::exchange(topics::ComponentRequest& request, double wait_s, std::chrono::milliseconds poll,
+                               const std::function<bool(const topics::ComponentReply&)>& take) {
   request.client = client_;
   request.request_id = next_id_++;
-  const auto until = RequestClock::now() + std::chrono::duration<double>(wait_s_);
+  const auto until = RequestClock::now() + std::chrono::duration<double>(wait_s);
   auto next_send = RequestClock::now();
   topics::ComponentReply reply;
   while (!components::g_stop && RequestClock::now() < until) {
-    // Sent as soon as a host's reader matched, then again every kResendEvery until answered.
     if (RequestClock::now() >= next_send && requests_.matched_readers() > 0) {
       requests_.write(request);
       next_send = RequestClock::now() + kResendEvery;
     }
-    replies_.wait(std::chrono::milliseconds(20));
+    replies_.wait(poll);
     while (replies_.take(reply))
-      if (reply.client == client_ && reply.request_id == request.request_id && reply.host == request.host) return reply;
+      if (reply.client == client_ && reply.request_id == request.request_id && take(reply)) return;
   }
-  return std::nullopt;
+}
+
+std::optional<topics::ComponentReply> ComponentClient::ask(topics::ComponentRequest request) {
+  std::optional<topics::ComponentReply> answer;
+  exchange(request, wait_s_, std::chrono::milliseconds(20), [&](const topics::ComponentReply& reply) {
+    if (reply.host != request.host) return false;
+    answer = reply;
+    return true;
+  });
+  return answer;
 }
 
 std::vector<topics::ComponentReply> ComponentClient::list_all(double listen_s) {
   topics::ComponentRequest request;
   request.verb = "list";
-  request.client = client_;
-  request.request_id = next_id_++;
   std::vector<topics::ComponentReply> out;
   std::set<std::string> answered;
-  const auto until = RequestClock::now() + std::chrono::duration<double>(listen_s);
-  auto next_send = RequestClock::now();
-  topics::ComponentReply reply;
-  while (!components::g_stop && RequestClock::now() < until) {
-    // Sent as soon as a host's reader matched, then again every kResendEvery until answered.
-    if (RequestClock::now() >= next_send && requests_.matched_readers() > 0) {
-      requests_.write(request);
-      next_send = RequestClock::now() + kResendEvery;
-    }
-    replies_.wait(std::chrono::milliseconds(50));
-    while (replies_.take(reply))
-      if (reply.client == client_ && reply.request_id == request.request_id && answered.insert(reply.host).second)
-        out.push_back(reply);
-  }
+  exchange(request, listen_s, std::chrono::milliseconds(50), [&](const topics::ComponentReply& reply) {
+    if (answered.insert(reply.host).second) out.push_back(reply);
+    return false;  // every host that answers within listen_s
+  });
   return out;
 }
 

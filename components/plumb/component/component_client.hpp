@@ -3,7 +3,9 @@
 // answers or the wait is over (the host answers a repeat with its first reply and applies it once).
 #pragma once
 
+#include <chrono>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,6 +26,9 @@ class ComponentClient {
   std::string no_answer(const std::string& host);
 
  private:
+  void exchange(topics::ComponentRequest& request, double wait_s, std::chrono::milliseconds poll,
+                const std::function<bool(const topics::ComponentReply&)>& take);
+
   components::Connection conn_;
   transport::Reader<topics::ComponentReply> replies_;
   transport::Writer<topics::ComponentRequest> requests_;
