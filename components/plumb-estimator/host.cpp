@@ -170,8 +170,9 @@ components::CounterList Host::counters() const {
     for (auto& c : first_runner_.counters()) all.push_back(std::move(c));
   for (const auto& [tool, runner] : runners_)
     for (auto& [name, value] : runner.counters()) {
+      const std::string& key = name;  // clang 14 lets no lambda capture a structured binding (C++20 does)
       auto it = std::find_if(all.begin() + static_cast<std::ptrdiff_t>(own), all.end(),
-                             [&](const auto& c) { return c.first == name; });
+                             [&](const auto& c) { return c.first == key; });
       if (it == all.end()) all.emplace_back(name, value);
       else it->second += value;
     }
