@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Two plugins of one tool side by side on the live page, the second loaded while the tool turns
-# (issue 37 item 4): plumb-sim and plumb-estimator --plugin compensated (transport H) -> plumb
+# (the comparison people watch): plumb-sim and plumb-estimator --plugin compensated (transport H) -> plumb
 # component load integral, then static (the commands and plumb-display on transport D) -> headless
 # Chromium: integral's card shows its difference from compensated, small and live; static's (no
 # angle while turning) shows "-" for each; compensated's none; and a plain Foxglove client gets
