@@ -2,7 +2,16 @@
 
 #include <civetweb.h>
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
 #include <stdexcept>
+#include <thread>
 
 #include "addresses.hpp"
 
@@ -11,7 +20,34 @@ namespace {
 
 int civetweb_quiet_log(const mg_connection*, const char*) { return 1; }
 
+// One connection to the listening port, closed at once (the listener, stopping, accepts nothing).
+void knock(const std::string& bind, int port) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  if (fd < 0) return;
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(static_cast<std::uint16_t>(port));
+  // 0.0.0.0 listens on loopback too.
+  const std::string host = bind == "0.0.0.0" ? "127.0.0.1" : bind;
+  if (::inet_pton(AF_INET, host.c_str(), &address.sin_addr) == 1)
+    (void)::connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address);
+  ::close(fd);
+}
+
 }  // namespace
+
+void stop_civetweb(mg_context* context, const std::string& bind, int port) {
+  std::atomic<bool> stopped{false};
+  std::thread waker([&] {
+    while (!stopped) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      if (!stopped) knock(bind, port);
+    }
+  });
+  mg_stop(context);
+  stopped = true;
+  waker.join();
+}
 
 CivetwebServer start_civetweb(const CivetwebStart& start, void* user_data) {
   mg_init_library(0);

@@ -25,4 +25,8 @@ struct CivetwebServer {
 };
 CivetwebServer start_civetweb(const CivetwebStart& start, void* user_data);
 
+// mg_stop, without its wait: civetweb's listener looks at its stop flag only between polls of its
+// listening socket, 2 s each, and holds the port until then; a connection while it stops wakes it.
+void stop_civetweb(mg_context* context, const std::string& bind, int port);
+
 }  // namespace plumb::display_component

@@ -54,7 +54,7 @@ FoxgloveServer::FoxgloveServer(const FoxgloveServerOptions& options, FoxgloveHub
 
 FoxgloveServer::~FoxgloveServer() {
   // mg_stop closes every connection: each close handler stops its sender thread.
-  if (context_) mg_stop(context_);
+  if (context_) stop_civetweb(context_, options_.bind, port_);
   mg_exit_library();
 }
 

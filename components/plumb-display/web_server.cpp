@@ -65,7 +65,7 @@ WebServer::WebServer(const WebOptions& options, Hub& hub) : options_(options), h
 
 WebServer::~WebServer() {
   // mg_stop closes every connection: each close handler stops its sender thread.
-  if (context_) mg_stop(context_);
+  if (context_) stop_civetweb(context_, options_.bind, port_);
   mg_exit_library();
 }
 

@@ -5,7 +5,17 @@ fail() { echo "FAIL - $*"; fails=$((fails + 1)); }
 # The EXIT trap of a test that starts programs in the background (their pids in the array `pids`) and
 # works in the folder `$work`: stops what still runs, removes the folder. kill fails for a program
 # that has already ended, as it should; that failure is ignored because it says nothing about the test.
-stop_programs_and_remove_work() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; rm -rf "$work"; }
+# The test ends only once they have: a program's ports are its own until it exits (plumb-display's
+# web server takes 2 s to let go of its page's port), and the next test may need them.
+stop_programs_and_remove_work() {
+  local p deadline=$((SECONDS + 10))
+  for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done
+  for p in "${pids[@]}"; do
+    while kill -0 "$p" 2>/dev/null && [ $SECONDS -lt $deadline ]; do sleep 0.1; done
+    kill -KILL "$p" 2>/dev/null || true
+  done
+  rm -rf "$work"
+}
 # A test that starts programs: the scratch folder `$work`, the empty array `pids`, and that EXIT trap.
 # The estimator host's record for its next instance (docs/operations.md) goes into `$work` too:
 # a test's host never reads what another test's host left.
