@@ -91,7 +91,9 @@ double ClippedSpin::take_variance() {
 
 std::optional<double> unseen_turn_across_gap(const InputReading& prev, const InputReading& in,
                                              const Eigen::Matrix3d& c_before, const Eigen::Matrix3d& c_after) {
-  if (!prev.b || !in.b || !across_axis(*prev.b) || !across_axis(*in.b)) return std::nullopt;
+  constexpr double kGapMinAcrossAxis = 0.05;
+  const auto across_enough = [](const Eigen::Vector3d& b) { return b.head<2>().norm() >= kGapMinAcrossAxis * b.norm(); };
+  if (!prev.b || !in.b || !across_enough(*prev.b) || !across_enough(*in.b)) return std::nullopt;
   // The field fixed in the navigation frame, seen after the mechanization's turn: the tool turned
   // further by a about its axis sees it a further -a across the axis.
   const Eigen::Vector3d predicted = c_after.transpose() * (c_before * *prev.b);

@@ -60,6 +60,15 @@ ImuReading FilterState::corrected(const InputReading& in, const InputReading* ea
   return r;
 }
 
+void FilterState::as_read(InputReading& made_up, const InputReading* earlier, bool samples_are_means,
+                          double dt_nominal) const {
+  const ImuReading bare = without_estimates(made_up, earlier);
+  const Eigen::Vector3d lever = (made_up.f - ba_) - bare.f;
+  Eigen::Vector3d f = made_up.f - ba_;
+  if (samples_are_means && dt_nominal > 0) f = instant_to_mean(f, bare.w, dt_nominal);
+  made_up.f = f + lever + ba_;
+}
+
 ImuReading FilterState::without_estimates(const InputReading& in, const InputReading* earlier) const {
   ImuReading r{in.t, in.f - ba_, in.w - bg_};
   r.w.z() /= 1.0 + gyro_spin_.z();

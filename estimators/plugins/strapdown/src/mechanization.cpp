@@ -36,6 +36,15 @@ Eigen::Vector3d mean_to_instant(const Eigen::Vector3d& mean_f, const Eigen::Vect
   return along + (mean_f - along) * (half / std::sin(half));
 }
 
+Eigen::Vector3d instant_to_mean(const Eigen::Vector3d& instant_f, const Eigen::Vector3d& w, double dt) {
+  const double theta = w.norm() * dt;
+  if (theta < 1e-3) return instant_f;
+  const Eigen::Vector3d u = w / w.norm();
+  const Eigen::Vector3d along = u * u.dot(instant_f);
+  const double half = 0.5 * theta;
+  return along + (instant_f - along) * (std::sin(half) / half);
+}
+
 Mechanization::Mechanization(const Eigen::Vector3d& w_ie_n, double g) : w_ie_(w_ie_n), g_n_(0.0, 0.0, g) {}
 
 void Mechanization::begin(const NavState& state) {

@@ -179,16 +179,18 @@ void Navigator::bridge_gap(const Input& from, const Input& at, const Input& in, 
   const Eigen::Vector3d v = filter_.mechanization().state().v;
   const Eigen::Vector3d across = v - c_bn.col(2) * c_bn.col(2).dot(v);
   // Through the gap in steps of the nominal interval, on readings made up (stream_faults.hpp).
-  const std::vector<Input> made_up = StreamFaults::gap_readings(
+  std::vector<Input> made_up = StreamFaults::gap_readings(
       from, at, c_bn, dt_nominal, Eigen::Vector3d(0.0, 0.0, -filter_.gravity()), filter_.accel_bias(),
       faults_.cross_rate());
+  for (std::size_t k = 1; k + 1 < made_up.size(); ++k)
+    filter_.as_read(made_up[k], &made_up[k - 1], config_.samples_are_means, dt_nominal);
   for (std::size_t k = 1; k < made_up.size(); ++k)
     filter_.step(made_up[k - 1], made_up[k], nullptr, config_.samples_are_means, dt_nominal);
   filter_.shift_motion(-across, -across * (at.t - from.t));
   // The field across the axis says how far the tool turned about it over the gap.
   if (const std::optional<double> turn = unseen_turn_across_gap(*prev_, in, c_bn, filter_.mechanization().tool_to_nav())) {
-    filter_.turn_about_axis(
-        faults_.axial_turn_seen(filter_.mechanization().tool_to_nav().col(2), *turn, in.b->head<2>().norm()));
+    filter_.turn_about_axis(faults_.axial_turn_seen(filter_.mechanization().tool_to_nav().col(2), *turn,
+                                                    in.b->head<2>().norm(), in.b->norm()));
   }
 }
 

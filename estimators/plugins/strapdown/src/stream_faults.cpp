@@ -15,6 +15,8 @@ namespace {
 constexpr double kSpreadMemoryS = 2.0;
 // The rate across the axis held through a gap: its mean over about this long.
 constexpr double kCrossRateMemoryS = 1.0;
+// The spin's wander about its mean (stick-slip: periods of 2-10 s) over about this long.
+constexpr double kSpinMemoryS = 5.0;
 }  // namespace
 
 void StreamFaults::reset() {
@@ -23,6 +25,7 @@ void StreamFaults::reset() {
   cross_rate_.setZero();
   cross_rate_var_ = 0;
   cross_rate_started_ = false;
+  spin_mean_ = spin_var_ = 0;
   pending_att_ = pending_vel_ = 0;
   pending_turn_.setZero();
   pending_force_.setZero();
@@ -49,6 +52,9 @@ void StreamFaults::observe(const InputReading& in, double dt, double dt_nominal)
   const double a = cross_rate_started_ && dt > 0 ? std::min(1.0, dt / kCrossRateMemoryS) : 1.0;
   cross_rate_ += a * (in.w.head<2>() - cross_rate_);
   cross_rate_var_ = a * a * spread_w2_ + (1 - a) * (1 - a) * cross_rate_var_;
+  const double b = cross_rate_started_ && dt > 0 ? std::min(1.0, dt / kSpinMemoryS) : 1.0;
+  spin_mean_ += b * (in.w.z() - spin_mean_);
+  spin_var_ += b * ((in.w.z() - spin_mean_) * (in.w.z() - spin_mean_) - spin_var_);
   cross_rate_started_ = true;
 }
 
@@ -74,8 +80,13 @@ void StreamFaults::bridge(const InputReading& prev, const InputReading& in, doub
   // of that noise times the gap.
   pending_att_ += cross_rate_var_ * dt * dt;
   constexpr double kHalfOverRoot3 = 0.28867513459481287;  // 1 / (2 sqrt(3))
-  const Eigen::Vector3d dtheta = (kHalfOverRoot3 * dt) * (c_bn * (in.w - prev.w));
-  pending_turn_.head<3>() += dtheta;
+  Eigen::Vector3d dtheta = (kHalfOverRoot3 * dt) * (in.w - prev.w);
+  // A string that sticks and slips turns at a rate that leaves the line between the readings either
+  // side and comes back: at 60 rpm +-60 %, a 2 s gap whose ends read the same rate may hide a
+  // turn of 200 deg. Its wander over the last seconds, times the gap, is what the gap may hide
+  // about the axis (taken back by the field across the axis after it: axial_turn_seen).
+  dtheta.z() = std::copysign(std::hypot(dtheta.z(), std::sqrt(spin_var_) * dt), dtheta.z());
+  pending_turn_.head<3>() += c_bn * dtheta;
   pending_force_.diagonal().array() += spread_f2_ * dt_nominal * missing_s;
   recent_ = 0;
 }
@@ -110,11 +121,16 @@ std::vector<InputReading> StreamFaults::gap_readings(const InputReading& prev, c
 // The field's angle across the axis before and after the gap, each with the magnetometers' noise
 // across it: a measurement of the turn with variance 2 (noise / field across)^2, weighed with the
 // gap's allowance about the axis as a Kalman update of that one angle.
-double StreamFaults::axial_turn_seen(const Eigen::Vector3d& axis_n, double turn, double field_across) {
+double StreamFaults::axial_turn_seen(const Eigen::Vector3d& axis_n, double turn, double field_across, double field) {
   if (!(field_across > 0)) return 0;
   const double allowed = axis_n.dot(pending_turn_.head<3>());
   constexpr double kMinFieldNoise2 = 1e-4;  // (0.01 uT)^2: a perfect simulated magnetometer
-  const double measured2 = 2.0 * std::max(spread_b2_, kMinFieldNoise2) / (field_across * field_across);
+  // Beyond the noise, a calibrated triad's misalignment (a milliradian) tilts the whole field into
+  // the part across the axis: an error the same before and after the gap only where the tool
+  // turned by nothing.
+  constexpr double kMisalignment = 1e-3;
+  const double misaligned2 = kMisalignment * kMisalignment * field * field;
+  const double measured2 = 2.0 * (std::max(spread_b2_, kMinFieldNoise2) + misaligned2) / (field_across * field_across);
   const double allowed2 = allowed * allowed;
   if (!(allowed2 + measured2 > 0)) return 0;
   const double gain = allowed2 / (allowed2 + measured2);

@@ -59,7 +59,11 @@ class ClippedSpin {
 // leaves tens of degrees off. The field's part across the axis before (prev) and after (in) the gap,
 // against where the mechanization's turn across it (c_before to c_after, tool to navigation frame)
 // puts the field, says what is left: the turn to add about the axis, modulo a whole turn (all an
-// attitude needs). None without the field across the axis at both ends.
+// attitude needs). None without the field across the axis at both ends: unlike a loop that must
+// follow every reading, one angle before and one after are weighed against their own noise
+// (StreamFaults::axial_turn_seen), so a part across the axis of a twentieth of the field will do
+// (a tool within 3 degrees of the field line; a tenth of it is 46 uT's 4.7, tens of times the
+// noise of a tool's magnetometers).
 std::optional<double> unseen_turn_across_gap(const InputReading& prev, const InputReading& in,
                                              const Eigen::Matrix3d& c_before, const Eigen::Matrix3d& c_after);
 

@@ -33,6 +33,12 @@ class FilterState {
   // (earlier, when there is one) gives.
   ImuReading corrected(const InputReading& in, const InputReading* earlier, bool samples_are_means,
                        double dt_nominal) const;
+  // A made-up reading (its force the value at its instant, with the accelerometers' bias) as the
+  // sensor would have read it, so that corrected() gives its force back: the lever arm's
+  // centripetal and tangential terms put in (at 70 rpm 1 cm off the axis, 0.5 m/s^2 turning with
+  // the tool: taken out of readings that never held it, 0.15 m across a 2 s gap) and, for means,
+  // the mean over its interval.
+  void as_read(InputReading& made_up, const InputReading* earlier, bool samples_are_means, double dt_nominal) const;
   // One minor step of the mechanization from reading prev to reading in, with prev2 (if any) the
   // reading before prev, each as corrected() gives it. A step's later reading is the next step's
   // earlier one, and the estimates change only when the filter updates them: each reading is

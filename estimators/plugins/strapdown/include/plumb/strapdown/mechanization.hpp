@@ -112,6 +112,8 @@ inline Eigen::Matrix<double, 3, 2> centripetal_matrix(const Eigen::Vector3d& w) 
 // anything fixed in the tool frame, such as the bias or the centripetal term, must be taken out
 // before). Below 1e-3 rad a turn shortens nothing measurable.
 Eigen::Vector3d mean_to_instant(const Eigen::Vector3d& mean_f, const Eigen::Vector3d& w, double dt);
+// Its inverse: the mean over the interval of a force whose value at the middle is instant_f.
+Eigen::Vector3d instant_to_mean(const Eigen::Vector3d& instant_f, const Eigen::Vector3d& w, double dt);
 
 class Mechanization {
  public:
