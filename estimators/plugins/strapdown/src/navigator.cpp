@@ -189,8 +189,7 @@ void Navigator::bridge_gap(const Input& from, const Input& at, const Input& in, 
   filter_.shift_motion(-across, -across * (at.t - from.t));
   // The field across the axis says how far the tool turned about it over the gap.
   if (const std::optional<double> turn = unseen_turn_across_gap(*prev_, in, c_bn, filter_.mechanization().tool_to_nav())) {
-    filter_.turn_about_axis(faults_.axial_turn_seen(filter_.mechanization().tool_to_nav().col(2), *turn,
-                                                    in.b->head<2>().norm(), in.b->norm()));
+    filter_.turn_about_axis(faults_.axial_turn_seen(*turn, in.b->head<2>().norm(), in.b->norm()));
   }
 }
 

@@ -28,6 +28,8 @@ void StreamFaults::reset() {
   spin_mean_ = spin_var_ = 0;
   pending_att_ = pending_vel_ = 0;
   pending_turn_.setZero();
+  pending_axial_ = 0;
+  pending_axis_.setZero();
   pending_force_.setZero();
   gap_said_ = repeat_said_ = false;
   notices_.clear();
@@ -85,7 +87,12 @@ void StreamFaults::bridge(const InputReading& prev, const InputReading& in, doub
   // side and comes back: at 60 rpm +-60 %, a 2 s gap whose ends read the same rate may hide a
   // turn of 200 deg. Its wander over the last seconds, times the gap, is what the gap may hide
   // about the axis (taken back by the field across the axis after it: axial_turn_seen).
-  dtheta.z() = std::copysign(std::hypot(dtheta.z(), std::sqrt(spin_var_) * dt), dtheta.z());
+  // Kept apart from the part across the axis: the field takes back the turn about the axis as
+  // it was made (a turn of 190 deg taken back along an axis 0.1 deg from it leaves 0.3 deg of tilt
+  // in the filter's noise, which the stop after the gap then reads as a tilt).
+  pending_axial_ += std::copysign(std::hypot(dtheta.z(), std::sqrt(spin_var_) * dt), dtheta.z());
+  pending_axis_ = c_bn.col(2);
+  dtheta.z() = 0;
   pending_turn_.head<3>() += c_bn * dtheta;
   pending_force_.diagonal().array() += spread_f2_ * dt_nominal * missing_s;
   recent_ = 0;
@@ -121,9 +128,9 @@ std::vector<InputReading> StreamFaults::gap_readings(const InputReading& prev, c
 // The field's angle across the axis before and after the gap, each with the magnetometers' noise
 // across it: a measurement of the turn with variance 2 (noise / field across)^2, weighed with the
 // gap's allowance about the axis as a Kalman update of that one angle.
-double StreamFaults::axial_turn_seen(const Eigen::Vector3d& axis_n, double turn, double field_across, double field) {
+double StreamFaults::axial_turn_seen(double turn, double field_across, double field) {
   if (!(field_across > 0)) return 0;
-  const double allowed = axis_n.dot(pending_turn_.head<3>());
+  const double allowed = pending_axial_;
   constexpr double kMinFieldNoise2 = 1e-4;  // (0.01 uT)^2: a perfect simulated magnetometer
   // Beyond the noise, a calibrated triad's misalignment (a milliradian) tilts the whole field into
   // the part across the axis: an error the same before and after the gap only where the tool
@@ -134,14 +141,16 @@ double StreamFaults::axial_turn_seen(const Eigen::Vector3d& axis_n, double turn,
   const double allowed2 = allowed * allowed;
   if (!(allowed2 + measured2 > 0)) return 0;
   const double gain = allowed2 / (allowed2 + measured2);
-  pending_turn_.head<3>() -= (1.0 - std::sqrt(1.0 - gain)) * allowed * axis_n;
+  pending_axial_ = std::sqrt(1.0 - gain) * allowed;
   return gain * turn;
 }
 
 void StreamFaults::add_to(UnseenMotionNoise& noise) {
   noise.turn += pending_turn_;
+  noise.turn.head<3>() += pending_axial_ * pending_axis_;
   noise.velocity += pending_force_;
   pending_turn_.setZero();
+  pending_axial_ = 0;
   pending_force_.setZero();
 }
 

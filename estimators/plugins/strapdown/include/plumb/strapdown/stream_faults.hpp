@@ -34,12 +34,12 @@ class StreamFaults {
   // The same gap as the filter bridges it, from the reading before (prev) to this one (in), the tool
   // frame to NED c_bn: the lost readings' share of the process noise of the epoch that bridges it.
   void bridge(const InputReading& prev, const InputReading& in, double dt_nominal, const Eigen::Matrix3d& c_bn);
-  // The last gap's turn about the tool's axis (axis_n, navigation frame) as the field across the
+  // The last gap's turn about the tool's axis as the field across the
   // axis shows it (unseen_turn_across_gap, the field across the axis after the gap `field_across`
   // and its whole `field`, microtesla): the part of it to take, weighed against what the gap may
   // hide about the axis and the magnetometers' noise; what the gap may hide about the axis shrinks
   // to match.
-  double axial_turn_seen(const Eigen::Vector3d& axis_n, double turn, double field_across, double field);
+  double axial_turn_seen(double turn, double field_across, double field);
   // The turn the gaps since the last epoch may hide, for the epoch; forgets it.
   void add_to(UnseenMotionNoise& noise);
   // A sample sent twice at t (dropped by the input checks).
@@ -76,7 +76,9 @@ class StreamFaults {
   bool cross_rate_started_ = false;
   double spin_mean_ = 0, spin_var_ = 0;  // the rate about the axis over the last seconds (rad/s, its square)
   double pending_att_ = 0, pending_vel_ = 0;  // variance per axis to add at the next epoch
-  Eigen::Matrix<double, 6, 1> pending_turn_ = Eigen::Matrix<double, 6, 1>::Zero();
+  Eigen::Matrix<double, 6, 1> pending_turn_ = Eigen::Matrix<double, 6, 1>::Zero();  // across the axis
+  double pending_axial_ = 0;  // about the axis, rad
+  Eigen::Vector3d pending_axis_ = Eigen::Vector3d::Zero();  // the tool's axis (navigation frame) at the last gap
   Eigen::Matrix3d pending_force_ = Eigen::Matrix3d::Zero();
   bool gap_said_ = false, repeat_said_ = false;
   std::vector<std::string> notices_;
