@@ -116,9 +116,11 @@ int run_play(const PlayOptions& o) {
     std::cerr << "plumb play: warning: no reader matched " << unmatched << " within --wait " << o.wait_s
               << " s: playing to none (start the readers first, or wait longer)\n";
   // A writer sees the match before the reader has finished matching it: reliable data sent in
-  // that moment is dropped by the reader (volatile: it was not there yet). Half a second settles it.
+  // that moment is dropped by the reader (volatile: it was not there yet). Half a second settled
+  // it on an idle machine; across vendors on a loaded one (CI, two cores) the reader took longer
+  // and lost all 200 batches of a recording played in 0.1 s. A second and a half.
   if (std::any_of(publishers.begin(), publishers.end(), [](const auto& p) { return p.second->matched() > 0; }))
-    components::sleep_while_running(0.5);
+    components::sleep_while_running(1.5);
 
   double error_sum = 0, error_max = 0;
   std::uint64_t timed = 0, passes = 0;
