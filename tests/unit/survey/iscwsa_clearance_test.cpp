@@ -23,6 +23,7 @@
 #include "plumb/survey/clearance_well_file.hpp"
 #include "plumb/survey/closest_approach.hpp"
 #include "plumb/survey/survey.hpp"
+#include "plumb/survey/survey_inputs.hpp"
 
 namespace plumb::survey {
 namespace {
@@ -220,6 +221,48 @@ TEST(IscwsaClearance, TheParentSeenFromASidetrackCountsFromTheKickOff) {
   }
   EXPECT_THROW(read_clearance_well_below(parent, "reference", 0.4, model, whole.stations.back().md_m + 10),
                std::runtime_error);
+}
+
+// plumb-survey scans a sidetrack live: at every new station, the well drilled so far surveyed again
+// from the kick-off, and its last point taken. That is the whole well's view at the same station
+// (later stations change nothing above them), so the live rows are the offline ones: a kick-off
+// between stations and one at a station, which the live well reaches as its newest station.
+TEST(IscwsaClearance, TheSidetrackViewStationByStationIsTheWholeWells) {
+  const std::string parent = kSet + "/reference.wellpath.csv";
+  StationListModel model;
+  model.error_model = "MWD:rev4";
+  model.dip_deg = 70;
+  const std::vector<Station> stations = read_station_csv(parent);
+  const ClearanceWell whole = read_clearance_well(parent, "reference", 0.4, model).well;
+  ASSERT_EQ(stations.size(), whole.stations.size());
+  for (const double kick_off : {915.0, 900.0}) {
+    const ClearanceWell below = read_clearance_well_below(parent, "reference", 0.4, model, kick_off).well;
+    int compared = 0;
+    for (std::size_t n = 1; n <= stations.size() && compared < 25; ++n) {
+      if (stations[n - 1].md_m < kick_off) continue;
+      const std::vector<Station> so_far(stations.begin(), stations.begin() + static_cast<std::ptrdiff_t>(n));
+      const std::vector<WellPoint> course(whole.stations.begin(), whole.stations.begin() + static_cast<std::ptrdiff_t>(n));
+      const WellPoint live = clearance_well_below(so_far, course, "live", "reference", 0.4, model, kick_off).well.stations.back();
+      const auto same = std::find_if(below.stations.begin(), below.stations.end(),
+                                     [&](const WellPoint& p) { return p.md_m == live.md_m; });
+      ASSERT_NE(same, below.stations.end()) << kick_off << " at " << live.md_m;
+      EXPECT_LT((live.position - same->position).norm(), 1e-9) << kick_off << " at " << live.md_m;
+      EXPECT_LE((live.covariance - same->covariance).norm(), 1e-9 * (1 + same->covariance.norm()))
+          << kick_off << " at " << live.md_m;
+      ++compared;
+    }
+    EXPECT_EQ(compared, 25) << kick_off;
+  }
+  // Not within the stations yet: said, naming what was given.
+  const std::vector<Station> first_two(stations.begin(), stations.begin() + 2);
+  const std::vector<WellPoint> course_two(whole.stations.begin(), whole.stations.begin() + 2);
+  try {
+    clearance_well_below(first_two, course_two, "the well drilled", "reference", 0.4, model, 900);
+    ADD_FAILURE() << "a kick-off below the well was taken";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("the well drilled: the sidetrack's kick-off at MD 900.00 m"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

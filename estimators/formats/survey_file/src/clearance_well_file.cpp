@@ -174,13 +174,21 @@ ClearanceWellFile read_clearance_well_below(const std::string& path, const std::
   const auto [stations, tie_in] = clearance_station_list(path);
   // The whole well first: where the kick-off's point is, and its direction there.
   const ClearanceWell whole = clearance_surveyed(stations, tie_in, path, name, radius_m, model).well;
-  const auto& p = whole.stations;
-  if (!(kick_off_md_m >= p.front().md_m && kick_off_md_m < p.back().md_m))
-    throw std::runtime_error(path + ": the sidetrack's kick-off at MD " + clearance_md_text(kick_off_md_m) +
+  return clearance_well_below(stations, whole.stations, path, name, radius_m, model, kick_off_md_m);
+}
+
+ClearanceWellFile clearance_well_below(const std::vector<Station>& stations, const std::vector<WellPoint>& p,
+                                       const std::string& where, const std::string& name, double radius_m,
+                                       const StationListModel& model, double kick_off_md_m) {
+  if (p.size() != stations.size() || p.empty())
+    throw std::invalid_argument(where + ": a well's course must have one point per station");
+  // A kick-off at the last station is the well drilled live, just reaching it.
+  if (!(kick_off_md_m >= p.front().md_m && kick_off_md_m <= p.back().md_m))
+    throw std::runtime_error(where + ": the sidetrack's kick-off at MD " + clearance_md_text(kick_off_md_m) +
                              " m is not within the well (MD " + clearance_md_text(p.front().md_m) + " to " +
                              clearance_md_text(p.back().md_m) + " m)");
   std::size_t k = 0;
-  while (p[k + 1].md_m <= kick_off_md_m) ++k;
+  while (k + 1 < p.size() && p[k + 1].md_m <= kick_off_md_m) ++k;
   const WellPoint at = p[k].md_m == kick_off_md_m ? p[k] : interpolate_course(p[k], p[k + 1], kick_off_md_m);
   std::vector<Station> below;
   Station first = stations[k];
@@ -192,7 +200,7 @@ ClearanceWellFile read_clearance_well_below(const std::string& path, const std::
     if (s.md_m > kick_off_md_m) below.push_back(s);
   StationListModel from_kick_off = model;
   from_kick_off.first_station_surveyed = true;
-  return clearance_surveyed(below, at.position, path, name, radius_m, from_kick_off);
+  return clearance_surveyed(below, at.position, where, name, radius_m, from_kick_off);
 }
 
 }  // namespace plumb::survey

@@ -6,6 +6,7 @@
 
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "plumb/survey/clearance.hpp"
 
@@ -41,5 +42,14 @@ ClearanceWellFile read_clearance_well(const std::string& path, const std::string
 // survey file, and for a kick-off outside the well.
 ClearanceWellFile read_clearance_well_below(const std::string& path, const std::string& name, double radius_m,
                                             const StationListModel& model, double kick_off_md_m);
+
+// The same from the well's stations as a station list holds them (md, inclination, azimuth in the
+// wells' common north) and its course at those stations (`course[i]` the point of `stations[i]`:
+// where the kick-off is, between two of them). What plumb clearance --sidetrack does with a file
+// and plumb-survey with the well it is drilling, station by station. std::runtime_error naming
+// `where` for a kick-off outside the course.
+ClearanceWellFile clearance_well_below(const std::vector<Station>& stations, const std::vector<WellPoint>& course,
+                                       const std::string& where, const std::string& name, double radius_m,
+                                       const StationListModel& model, double kick_off_md_m);
 
 }  // namespace plumb::survey
