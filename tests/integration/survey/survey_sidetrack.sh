@@ -41,7 +41,7 @@ echo_pid=$!; pids+=($echo_pid)
 "$bin/plumb" topic echo plumb/status --csv --timeout 150 --transport "$echo_t" > "$work/status.csv" 2> /dev/null &
 pids+=($!)
 # The stations as published (every digit: the survey file rounds them to 1 mm and 0.001 deg).
-"$bin/plumb" topic echo "plumb/survey/$tool" --csv --count 7 --timeout 150 --transport "$echo_t" \
+"$bin/plumb" topic echo plumb/survey/drilling_survey --csv --count 7 --timeout 150 --transport "$echo_t" \
   > "$work/stations.csv" 2> "$work/stations.err" &
 stations_pid=$!; pids+=($stations_pid)
 "$bin/plumb-estimator" --transport "$sim_t" --input plumb/sensor/raw --reliable --plugin static --window 5 -q \
@@ -58,7 +58,7 @@ wait_for "$work/status.csv" "plumb-survey" 30 || fail "no plumb-survey on plumb/
   --wait-subscribers 20 > "$work/sim.out" 2>&1 &
 sim=$!; pids+=($sim)
 wait "$echo_pid" || { fail "plumb topic echo plumb/clearance: $(cat "$work/clearance.err")"; cat "$work/survey.err"; finish; }
-wait "$stations_pid" || { fail "plumb topic echo plumb/survey/$tool: $(cat "$work/stations.err")"; finish; }
+wait "$stations_pid" || { fail "plumb topic echo plumb/survey/drilling_survey: $(cat "$work/stations.err")"; finish; }
 wait "$sim" || fail "plumb-sim failed: $(tail -3 "$work/sim.out")"
 
 # The same stations offline: the well drilled as a station list (placed by its first station), the
