@@ -113,8 +113,9 @@ bool TcpSender::connect(std::chrono::milliseconds wait, const std::function<bool
     const auto left = std::chrono::duration_cast<milliseconds>(until - SenderClock::now());
     if (attempt(std::clamp(left, milliseconds(200), milliseconds(2000)))) return true;
     ++attempts;
-    if ((stop && stop()) || SenderClock::now() + retry >= until) break;
-    std::this_thread::sleep_for(retry);
+    const auto now = SenderClock::now();
+    if ((stop && stop()) || now >= until) break;
+    std::this_thread::sleep_for(std::min<SenderClock::duration>(retry, until - now));  // the last try at the deadline
   }
   if (attempts > 1)
     last_error_ += " (" + std::to_string(attempts) + " attempts in " +
