@@ -21,6 +21,13 @@ std::string describe(const ClearanceWatch::Pair& p, const survey::ClearanceLevel
 
 }  // namespace
 
+void ClearanceWatch::check_sidetracks(const components::ClearanceCliOptions& options, bool survey_has_tool_code) {
+  if (!options.sidetracks.empty() && !survey_has_tool_code)
+    throw std::invalid_argument("--sidetrack needs an ISCWSA error model for the survey (--error-model MWD, GYRO-NS, "
+                                "a tool code file; not plumb): the well drilled is surveyed again from the kick-off "
+                                "through it");
+}
+
 ClearanceWatch::ClearanceWatch(const components::ClearanceCliOptions& options, const survey::StationListModel& model,
                                const std::optional<survey::StationListModel>& reference_model,
                                survey::AzimuthReference survey_reference, std::function<void(const std::string&)> note)
@@ -30,10 +37,7 @@ ClearanceWatch::ClearanceWatch(const components::ClearanceCliOptions& options, c
   if (survey_reference == survey::AzimuthReference::Magnetic)
     throw std::invalid_argument("--offset and --sidetrack need a survey in true or grid north (--reference true or "
                                 "grid): a magnetic north moves with the field, and the wells share no frame in it");
-  if (!options_.sidetracks.empty() && !reference_model_)
-    throw std::invalid_argument("--sidetrack needs an ISCWSA error model for the survey (--error-model MWD, GYRO-NS, "
-                                "a tool code file; not plumb): the well drilled is surveyed again from the kick-off "
-                                "through it");
+  check_sidetracks(options_, reference_model_.has_value());
   const auto read = [&](const std::string& path, bool sidetrack) {
     Offset offset;
     offset.file = survey::read_clearance_well(path, components::clearance_well_name(path), options_.offset_radius_m, model);

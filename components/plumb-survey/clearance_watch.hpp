@@ -35,6 +35,10 @@ class ClearanceWatch {
                  const std::optional<survey::StationListModel>& reference_model,
                  survey::AzimuthReference survey_reference, std::function<void(const std::string&)> note);
 
+  // Throws std::invalid_argument for --sidetrack without an ISCWSA error model for the survey
+  // (`survey_has_tool_code` false): said before joining the network.
+  static void check_sidetracks(const components::ClearanceCliOptions& options, bool survey_has_tool_code);
+
   bool active() const { return !offsets_.empty(); }
   // The survey's newest station against every offset well (a sidetrack: once below its kick-off).
   // Every row of the survey comes here, in order: a sidetrack's scan surveys them again.

@@ -34,6 +34,11 @@ model_args=(--error-model MWD --gravity 9.80665 --total-field 50 --dip 60)
 survey_args=(--transport "$survey_t" --tool-id "$tool" --file "$work/survey.csv" --plugin static --reference true
              --declination 0 --depth-clock-offset 0 "${model_args[@]}" "${clearance_args[@]}")
 
+# Without an ISCWSA error model the well drilled cannot be surveyed again: refused before the network.
+expect_usage "--sidetrack with --error-model plumb" "^plumb-survey: --sidetrack needs an ISCWSA error model" \
+  "$bin/plumb-survey" --tool-id "$tool" --file "$work/refused.csv" --reference true --declination 0 --gravity 9.80665 \
+  --total-field 50 --dip 60 --error-model plumb "${clearance_args[@]}"
+
 # Four stations lie below the kick-off (4.5, 6, 7.5 and 9 m): four rows.
 "$bin/plumb" topic echo plumb/clearance --csv --count 4 --timeout 150 --transport "$echo_t" \
   > "$work/clearance.csv" 2> "$work/clearance.err" &
