@@ -1,5 +1,6 @@
 #include "rig_feed.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <ctime>
