@@ -2,7 +2,7 @@
 # A sidetrack in the live anti-collision scan: plumb-sim's stop-and-go run (transport S; 45 deg
 # toward 120 deg, a station every 1.5 m to 9 m) -> plumb-estimator --plugin static (S) ->
 # plumb-survey (transport V) with --sidetrack: a well that kicks off the one drilled at MD 3.75 m
-# (between its stations at 3 and 4.5 m) and turns away to the right, horizontal. Readers of
+# (between its stations at 3 and 4.5 m) and turns away to the right, near horizontal. Readers of
 # plumb/clearance, plumb/status and plumb/survey/<tool> (transport E). The sidetrack must be scanned
 # below its kick-off only, each row on plumb/clearance as `plumb clearance --sidetrack` computes it
 # offline from the same stations (the survey's own, as a station list: SF within 0.1 %, distances
