@@ -346,7 +346,8 @@ int run_live_survey(const LiveOptions& o) {
   clock.drift_ppm = o.depth_clock_drift_ppm;
   check_depth_clock_options(clock);  // before joining the network: a usage error is said at once
   components::check_clearance_options(o.clearance);
-  ClearanceWatch::check_sidetracks(o.clearance, components::make_survey_options(o.survey, o.estimator).tool_code.has_value());
+  if (!o.clearance.sidetracks.empty())
+    ClearanceWatch::check_sidetracks(o.clearance, components::make_survey_options(o.survey, o.estimator).tool_code.has_value());
   LiveSurvey survey(o);
   return survey.run();
 }
