@@ -43,6 +43,7 @@ ClearanceWatch::ClearanceWatch(const components::ClearanceCliOptions& options, c
     offset.file = survey::read_clearance_well(path, components::clearance_well_name(path), options_.offset_radius_m, model);
     offset.sidetrack = sidetrack;
     const auto& w = offset.file;
+    if (sidetrack) offset.view.emplace(w.well.stations.front().md_m, *reference_model_, "the well drilled");
     std::string line = "offset well " + w.well.name + ": " + std::to_string(w.well.stations.size()) + " station(s) from " +
                        path + ", error model " + w.error_model;
     if (sidetrack)
@@ -60,30 +61,26 @@ ClearanceWatch::ClearanceWatch(const components::ClearanceCliOptions& options, c
         "plumb/clearance and plumb/status");
 }
 
-std::optional<ClearanceWatch::Pair> ClearanceWatch::sidetrack_pair(Offset& offset, const survey::SurveyRow& row) {
-  const double kick_off = offset.file.well.stations.front().md_m;
-  if (row.station.md_m < kick_off) return std::nullopt;  // the wells' common path
-  const auto not_scanned = [&](const std::string& why) {
-    if (!offset.said_not_scanned) note_("sidetrack " + offset.file.well.name + " is not scanned: " + why);
-    offset.said_not_scanned = true;
-    return std::nullopt;
-  };
-  if (course_so_far_.front().md_m > kick_off)
-    return not_scanned("it kicks off at MD " + clearance_number(kick_off, 2) + " m, above the survey's first station (MD " +
-                       clearance_number(course_so_far_.front().md_m, 2) + " m)");
+std::optional<ClearanceWatch::Pair> ClearanceWatch::sidetrack_pair(Offset& offset, const survey::SurveyRow& row,
+                                                                   const survey::WellPoint& station) {
+  if (!offset.view) return std::nullopt;
+  // As a station list holds it: depth and angles in the survey's north, nothing measured besides.
+  survey::Station listed;
+  listed.md_m = row.station.md_m;
+  listed.inclination_deg = row.station.inclination_deg;
+  listed.magnetic_azimuth_deg = row.azimuth_deg;
   try {
-    // The well drilled down to this station, surveyed again from the kick-off; its last point is
-    // this station as the sidetrack sees it.
-    const auto below = survey::clearance_well_below(stations_so_far_, course_so_far_, "the well drilled", "reference",
-                                                    options_.reference_radius_m, *reference_model_, kick_off);
+    const auto seen = offset.view->add(listed, station);
+    if (!seen) return std::nullopt;  // above the kick-off: the wells' common hole
     Pair p;
     p.offset = offset.file.well.name;
-    p.clearance = survey::station_clearance(below.well.stations.back(), options_.reference_radius_m, offset.file.well,
-                                            options_.rule);
+    p.clearance = survey::station_clearance(*seen, options_.reference_radius_m, offset.file.well, options_.rule);
     p.level = survey::clearance_level(p.clearance.separation_factor, options_.levels);
     return p;
   } catch (const std::exception& e) {
-    return not_scanned(e.what());
+    note_("sidetrack " + offset.file.well.name + " is not scanned any more: " + e.what());
+    offset.view.reset();
+    return std::nullopt;
   }
 }
 
@@ -92,19 +89,10 @@ std::vector<ClearanceWatch::Pair> ClearanceWatch::at_station(const survey::Surve
   if (offsets_.empty()) return pairs;
   // The newest station's covariance is the survey's there: later stations do not change it.
   const survey::WellPoint station = survey::well_point(row);
-  if (!options_.sidetracks.empty()) {
-    // As a station list holds it: depth and angles in the survey's north, nothing measured besides.
-    survey::Station listed;
-    listed.md_m = row.station.md_m;
-    listed.inclination_deg = row.station.inclination_deg;
-    listed.magnetic_azimuth_deg = row.azimuth_deg;
-    stations_so_far_.push_back(listed);
-    course_so_far_.push_back(station);
-  }
   pairs.reserve(offsets_.size());
   for (auto& offset : offsets_) {
     if (offset.sidetrack) {
-      if (auto p = sidetrack_pair(offset, row)) pairs.push_back(std::move(*p));
+      if (auto p = sidetrack_pair(offset, row, station)) pairs.push_back(std::move(*p));
       continue;
     }
     Pair p;

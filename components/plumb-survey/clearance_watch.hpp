@@ -2,7 +2,7 @@
 // well (read once, at start) by the ISCWSA separation rule, and the level of the least clear one,
 // said when it changes (docs/surveys.md, "Anti-collision"). A sidetrack of the well drilled is
 // scanned below its kick-off only, the well surveyed again from there as plumb clearance
-// --sidetrack does (survey::clearance_well_below, the same code).
+// --sidetrack does (survey::SidetrackView, the same code, fed one station at a time).
 #pragma once
 
 #include <cstdint>
@@ -41,7 +41,7 @@ class ClearanceWatch {
 
   bool active() const { return !offsets_.empty(); }
   // The survey's newest station against every offset well (a sidetrack: once below its kick-off).
-  // Every row of the survey comes here, in order: a sidetrack's scan surveys them again.
+  // Every row of the survey comes here, in order: a sidetrack's view is built from them.
   std::vector<Pair> at_station(const survey::SurveyRow& row);
 
   survey::ClearanceLevel level() const { return level_; }
@@ -53,18 +53,16 @@ class ClearanceWatch {
  private:
   struct Offset {
     survey::ClearanceWellFile file;
-    bool sidetrack = false;  // kicks off the survey's well at its first station
-    bool said_not_scanned = false;
+    // A sidetrack: the survey's well as it sees it, from its kick-off (its first station); none
+    // once it cannot be scanned (said once).
+    std::optional<survey::SidetrackView> view;
+    bool sidetrack = false;
   };
-  std::optional<Pair> sidetrack_pair(Offset& offset, const survey::SurveyRow& row);
+  std::optional<Pair> sidetrack_pair(Offset& offset, const survey::SurveyRow& row, const survey::WellPoint& station);
 
   components::ClearanceCliOptions options_;
   std::optional<survey::StationListModel> reference_model_;
   std::vector<Offset> offsets_;
-  // The survey's stations so far as a station list holds them, and their points: what a sidetrack's
-  // view of the well is surveyed again from.
-  std::vector<survey::Station> stations_so_far_;
-  std::vector<survey::WellPoint> course_so_far_;
   std::function<void(const std::string&)> note_;
   survey::ClearanceLevel level_ = survey::ClearanceLevel::Clear;
   std::string status_line_;
