@@ -51,10 +51,9 @@ std::string DdsSink::describe() const {
 }
 
 bool DdsSink::start() {
-  // plumb-wits may be starting beside the simulator (a launch file): the rig's feed waits for it.
-  if (rig_ && !rig_->connect(std::max(options_.wait_subscribers_s, 5.0)) && !components::g_stop)
-    std::cout << "plumb-sim: nobody listens on " << options_.wits_to << " (plumb-wits --listen); the rig's frames are "
-              << "lost until it does" << std::endl;
+  // plumb-wits may be starting beside the simulator (a launch file): the rig's feed waits for it,
+  // and says whether it came (RigFeed::connect).
+  if (rig_) rig_->connect(options_.wait_subscribers_s);
   if (options_.wait_subscribers_s <= 0) return true;
   // Discovery takes a moment: without this wait the first batches go to nobody.
   const auto until = Clock::now() + std::chrono::duration<double>(options_.wait_subscribers_s);

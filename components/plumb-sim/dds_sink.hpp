@@ -18,7 +18,7 @@ struct DdsSinkOptions {
   std::string sensor_topic;
   std::string truth_topic;        // empty: no truth
   bool reliable = false;
-  double wait_subscribers_s = 5;  // bounded wait for a matched reader before the first batch
+  double wait_subscribers_s = 5;  // bounded wait for a matched reader (and plumb-wits) before the first batch
   double linger_s = 1;            // after the last batch, for reliable readers to catch up
   std::string tool_id;
   // The depth's stamps on a rig clock: t + offset + drift t (t the sensors' time).

@@ -59,8 +59,8 @@ void add_output_options(CLI::App& app, OutputOptions& o) {
   app.add_option("--batch", o.batch, "samples per batch (1..32)")->capture_default_str()->check(CLI::Range(1, 32));
   app.add_flag("--reliable", o.reliable, "reliable sensor stream (nothing lost) instead of best effort");
   app.add_option("--wait-subscribers", o.wait_subscribers_s,
-                 "seconds to wait at most for a reader of the sensor topic before starting (0: do not wait)")
-      ->capture_default_str();
+                 "seconds to wait at most for a reader of the sensor topic before starting, and with --wits for "
+                 "plumb-wits to listen (default 5 s, with --wits 20 s; 0: do not wait)");
   app.add_option("--linger", o.linger_s, "seconds to stay after the last batch so reliable readers catch up")
       ->capture_default_str();
   app.add_option("--csv", o.csv_dir, "write DIR/sensor.csv and DIR/truth.csv instead of publishing");
@@ -206,6 +206,9 @@ int run_main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return plumb::components::exit_on_parse_error(app, e);
   }
+  // plumb-wits may be starting beside the simulator (a launch file, a slow computer): the rig waits
+  // longer for it than for a sensor reader, unless told otherwise.
+  if (!output_options.wits_to.empty() && app.count("--wait-subscribers") == 0) output_options.wait_subscribers_s = 20;
 
   try {
     if (is_drilling(scenario_options)) {

@@ -5,7 +5,10 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
+
+#include "plumb/wits/tcp_sender.hpp"
 
 namespace plumb::sim_component {
 
@@ -13,11 +16,9 @@ class RigFeed {
  public:
   // HOST:PORT of plumb-wits --listen; throws std::invalid_argument on a bad address.
   RigFeed(const std::string& host_port, double interval_s);
-  ~RigFeed();
-  RigFeed(const RigFeed&) = delete;
-  RigFeed& operator=(const RigFeed&) = delete;
 
-  // Connects, trying for up to wait_s (plumb-wits may start after the simulator). False if nobody
+  // Connects, trying for up to wait_s (plumb-wits may start after the simulator): one line when it
+  // starts waiting, one when it connected or gave up (with the system's reason). False if nobody
   // listens by then (the frames are then lost until it does, and counted).
   bool connect(double wait_s);
   // The tool's measured depth at run time t: a frame once t reaches the next interval. A lost
@@ -29,12 +30,9 @@ class RigFeed {
   std::string describe() const;
 
  private:
-  bool try_connect();
-  std::string host_;
-  int port_ = 0;
+  std::optional<wits::TcpSender> sender_;
   double interval_s_;
   double next_t_s_ = 0;
-  int fd_ = -1;
   std::uint64_t sent_ = 0, lost_ = 0;
 };
 

@@ -56,6 +56,17 @@ survey::StationListModel offset_model(const LiveOptions& o, const survey::Survey
   return m;
 }
 
+// The survey's own stations, surveyed again from a sidetrack's kick-off: through the survey's ISCWSA
+// error model and reference field (none without an ISCWSA model: plumb's own propagation is not a
+// tool code).
+std::optional<survey::StationListModel> reference_model(const LiveOptions& o, const survey::SurveyOptions& s) {
+  if (!s.tool_code) return std::nullopt;
+  survey::StationListModel m = offset_model(o, s);
+  m.error_model = o.survey.error_model == "auto" ? "MWD" : o.survey.error_model;
+  m.first_station_surveyed = true;
+  return m;
+}
+
 // One live survey: its topics, the stations it has (kept in the file), what it has heard.
 class LiveSurvey {
  public:
@@ -74,7 +85,8 @@ class LiveSurvey {
         status_(*conn_.participant, kProgram),
         clock_(clock_options(o)),
         detector_(components::make_detector_options(o.survey), [this](survey::Station st) { on_station(st); }, note),
-        clearance_(o.clearance, offset_model(o, result_.options()), result_.options().reference, note) {
+        clearance_(o.clearance, offset_model(o, result_.options()), reference_model(o, result_.options()),
+                   result_.options().reference, note) {
     if (clearance_.active())
       clearance_writer_.emplace(transport::make_writer<topics::Clearance>(
           *conn_.participant, transport::topic_names::kClearance,
@@ -334,6 +346,8 @@ int run_live_survey(const LiveOptions& o) {
   clock.drift_ppm = o.depth_clock_drift_ppm;
   check_depth_clock_options(clock);  // before joining the network: a usage error is said at once
   components::check_clearance_options(o.clearance);
+  if (!o.clearance.sidetracks.empty())
+    ClearanceWatch::check_sidetracks(o.clearance, components::make_survey_options(o.survey, o.estimator).tool_code.has_value());
   LiveSurvey survey(o);
   return survey.run();
 }

@@ -1,10 +1,8 @@
 #include "output.hpp"
 
 #include <arpa/inet.h>
-#include <netdb.h>
 #include <netinet/in.h>
 #include <poll.h>
-#include <sys/ioctl.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -17,79 +15,41 @@
 
 #include "plumb/bridge/pty.hpp"
 #include "plumb/components/cli.hpp"
+#include "plumb/wits/tcp_sender.hpp"
 
 namespace plumb::wits_send {
 namespace {
 
 using namespace std::chrono_literals;
 
-bool send_all(int fd, const std::string& bytes) {
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::send(fd, bytes.data() + done, bytes.size() - done, MSG_NOSIGNAL);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
-// Closes a socket once the peer has read everything sent (nothing left in the send queue), at
-// most 2 s, so that a dropped connection loses no whole frame.
-void close_when_sent(int fd) {
-  for (int i = 0; i < 100; ++i) {
-    int queued = 0;
-    if (::ioctl(fd, TIOCOUTQ, &queued) != 0 || queued == 0) break;
-    std::this_thread::sleep_for(20ms);
-  }
-  ::close(fd);
-}
-
+// plumb-wits-send is a rig that keeps trying until a reader listens (or it is stopped): it says
+// so once, after the first attempt failed.
 class TcpClientOutput final : public Output {
  public:
-  TcpClientOutput(std::string host, int port) : host_(std::move(host)), port_(port) {}
+  TcpClientOutput(std::string host, int port) : sender_(std::move(host), port) {}
   ~TcpClientOutput() override { drop(); }
   bool write(const std::string& bytes) override {
-    if (fd_ < 0 && !connect_now()) return false;
-    if (send_all(fd_, bytes)) return true;
+    if (!sender_.is_open() && !connect_now()) return false;
+    if (sender_.send(bytes)) return true;
     drop();
     return false;
   }
-  void drop() override {
-    if (fd_ >= 0) close_when_sent(fd_);
-    fd_ = -1;
-  }
-  std::string describe() const override { return "TCP client to " + host_ + ":" + std::to_string(port_); }
+  void drop() override { sender_.close_when_sent(); }
+  std::string describe() const override { return "TCP client to " + sender_.address(); }
 
  private:
   bool connect_now() {
-    bool said = false;
-    while (!components::g_stop) {
-      addrinfo hints{};
-      hints.ai_family = AF_INET;
-      hints.ai_socktype = SOCK_STREAM;
-      addrinfo* found = nullptr;
-      if (::getaddrinfo(host_.c_str(), std::to_string(port_).c_str(), &hints, &found) == 0) {
-        const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-        const bool ok = ::connect(fd, found->ai_addr, found->ai_addrlen) == 0;
-        ::freeaddrinfo(found);
-        if (ok) {
-          fd_ = fd;
-          std::cout << kProgram << ": connected to " << host_ << ":" << port_ << std::endl;
-          return true;
-        }
-        ::close(fd);
-      }
-      if (!said) std::cout << kProgram << ": waiting for a WITS reader at " << host_ << ":" << port_ << std::endl;
-      said = true;
-      std::this_thread::sleep_for(100ms);
+    const auto stopped = [] { return components::g_stop.load(); };
+    if (!sender_.connect(0ms, stopped)) {
+      std::cout << kProgram << ": waiting for a WITS reader at " << sender_.address() << " (" << sender_.last_error()
+                << ")" << std::endl;
+      if (!sender_.connect(std::chrono::hours(24 * 365), stopped)) return false;
     }
-    return false;
+    std::cout << kProgram << ": connected to " << sender_.address() << std::endl;
+    return true;
   }
 
-  std::string host_;
-  int port_;
-  int fd_ = -1;
+  wits::TcpSender sender_;
 };
 
 class TcpServerOutput final : public Output {
@@ -111,12 +71,12 @@ class TcpServerOutput final : public Output {
   }
   bool write(const std::string& bytes) override {
     if (fd_ < 0 && !accept_now()) return false;
-    if (send_all(fd_, bytes)) return true;
+    if (wits::send_all(fd_, bytes)) return true;
     drop();
     return false;
   }
   void drop() override {
-    if (fd_ >= 0) close_when_sent(fd_);
+    if (fd_ >= 0) wits::close_when_sent(fd_);
     fd_ = -1;
   }
   std::string describe() const override { return "TCP server on port " + std::to_string(port_); }

@@ -11,6 +11,11 @@ void add_clearance_options(CLI::App& app, ClearanceCliOptions& o, bool offsets_r
                                 "an offset well (repeat for each): a plumb survey file (true or grid north) or a station "
                                 "list CSV (md_m,inclination_deg,azimuth_deg; its first row's north_m,east_m,tvd_m place it)")
                      ->check(CLI::ExistingFile);
+  app.add_option("--sidetrack", o.sidetracks,
+                 "an offset well that kicks off the reference at its first station (repeat for each): against it "
+                 "both wells' uncertainty counts from the kick-off, the reference surveyed again from there through "
+                 "its error model, and the common path above is not scanned")
+      ->check(CLI::ExistingFile);
   if (offsets_required) offset->required();
   app.add_option("--reference-radius", o.reference_radius_m, "hole radius of the reference well (the one drilled), m")
       ->capture_default_str();

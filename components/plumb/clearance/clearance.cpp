@@ -29,7 +29,6 @@ namespace {
 struct ClearanceCommandOptions {
   std::string reference;
   components::ClearanceCliOptions clearance;
-  std::vector<std::string> sidetracks;  // offsets that kick off the reference at their first station
   survey::StationListModel model;
   std::string first_station = "surveyed";
   std::string csv, plot;
@@ -64,7 +63,7 @@ int run_clearance(ClearanceCommandOptions o) {
   const auto& rule = o.clearance.rule;
   const auto& levels = o.clearance.levels;
   o.model.first_station_surveyed = o.first_station == "surveyed";
-  if (o.clearance.offsets.empty() && o.sidetracks.empty())
+  if (o.clearance.offsets.empty() && o.clearance.sidetracks.empty())
     throw std::invalid_argument("no offset well: give --offset FILE or --sidetrack FILE (each may be repeated)");
   const std::string reference_name = components::clearance_well_name(o.reference);
   const auto reference = survey::read_clearance_well(o.reference, reference_name, o.clearance.reference_radius_m, o.model);
@@ -92,7 +91,7 @@ int run_clearance(ClearanceCommandOptions o) {
     offsets.push_back(std::move(off));
   };
   for (const auto& path : o.clearance.offsets) add_offset(path, false);
-  for (const auto& path : o.sidetracks) add_offset(path, true);
+  for (const auto& path : o.clearance.sidetracks) add_offset(path, true);
   std::string table = clearance_csv_header();
   std::cout << "# reference " << reference.well.name << " (" << reference.well.stations.size() << " stations, error model "
             << reference.error_model << "); k " << rule.k << ", sigma_pa " << rule.sigma_pa_m << " m, S_m "
@@ -161,11 +160,6 @@ void add_clearance_verb(CLI::App& app, Verbs& verbs) {
       ->required()
       ->check(CLI::ExistingFile);
   components::add_clearance_options(*cmd, o->clearance, /*offsets_required=*/false);
-  cmd->add_option("--sidetrack", o->sidetracks,
-                  "an offset well that kicks off the reference at its first station (repeat for each): against it "
-                  "both wells' uncertainty counts from the kick-off, the reference (a station list) surveyed again from "
-                  "there, and the common path above is not scanned")
-      ->check(CLI::ExistingFile);
   cmd->add_option("--error-model", o->model.error_model, "error model of station-list wells: a built-in tool code "
                                                          "(MWD, MWD:rev4, ...) or a tool code file")
       ->capture_default_str();

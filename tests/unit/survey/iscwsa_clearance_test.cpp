@@ -23,6 +23,7 @@
 #include "plumb/survey/clearance_well_file.hpp"
 #include "plumb/survey/closest_approach.hpp"
 #include "plumb/survey/survey.hpp"
+#include "plumb/survey/survey_inputs.hpp"
 
 namespace plumb::survey {
 namespace {
@@ -220,6 +221,52 @@ TEST(IscwsaClearance, TheParentSeenFromASidetrackCountsFromTheKickOff) {
   }
   EXPECT_THROW(read_clearance_well_below(parent, "reference", 0.4, model, whole.stations.back().md_m + 10),
                std::runtime_error);
+}
+
+// plumb-survey scans a sidetrack live: the well drilled goes into a SidetrackView one station at a
+// time, and each station's point as the sidetrack sees it is scanned at once. It is the whole
+// well's view at the same station (later stations change nothing above them), so the live rows are
+// the offline ones: a kick-off between stations, and one at a station (the live well reaching it).
+TEST(IscwsaClearance, TheSidetrackViewStationByStationIsTheWholeWells) {
+  const std::string parent = kSet + "/reference.wellpath.csv";
+  StationListModel model;
+  model.error_model = "MWD:rev4";
+  model.dip_deg = 70;
+  const std::vector<Station> stations = read_station_csv(parent);
+  const ClearanceWell whole = read_clearance_well(parent, "reference", 0.4, model).well;
+  ASSERT_EQ(stations.size(), whole.stations.size());
+  for (const double kick_off : {915.0, 900.0}) {
+    const ClearanceWell below = read_clearance_well_below(parent, "reference", 0.4, model, kick_off).well;
+    SidetrackView view(kick_off, model, "live");
+    std::size_t seen = 0;
+    for (std::size_t i = 0; i < stations.size(); ++i) {
+      const auto live = view.add(stations[i], whole.stations[i]);
+      ASSERT_EQ(live.has_value(), stations[i].md_m >= kick_off) << kick_off << " at " << stations[i].md_m;
+      if (!live) continue;
+      ASSERT_DOUBLE_EQ(live->md_m, stations[i].md_m);
+      const auto same = std::find_if(below.stations.begin(), below.stations.end(),
+                                     [&](const WellPoint& p) { return p.md_m == live->md_m; });
+      ASSERT_NE(same, below.stations.end()) << kick_off << " at " << live->md_m;
+      EXPECT_LT((live->position - same->position).norm(), 1e-9) << kick_off << " at " << live->md_m;
+      EXPECT_LE((live->covariance - same->covariance).norm(), 1e-9 * (1 + same->covariance.norm()))
+          << kick_off << " at " << live->md_m;
+      ++seen;
+    }
+    // Every station from the kick-off down: the list below it, less its first point when that one
+    // was interpolated between two stations.
+    const bool at_a_station =
+        std::any_of(stations.begin(), stations.end(), [&](const Station& st) { return st.md_m == kick_off; });
+    EXPECT_EQ(seen, below.stations.size() - (at_a_station ? 0 : 1)) << kick_off;
+    ASSERT_NE(view.survey(), nullptr);
+  }
+  // A kick-off above the well's first station: said, naming what was given.
+  SidetrackView early(whole.stations[2].md_m - 1, model, "the well drilled");
+  try {
+    early.add(stations[3], whole.stations[3]);
+    ADD_FAILURE() << "a kick-off above the first station was taken";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("the well drilled: the sidetrack's kick-off at MD"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

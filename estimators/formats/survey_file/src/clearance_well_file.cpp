@@ -112,10 +112,8 @@ std::string clearance_md_text(double md_m) {
   return text;
 }
 
-// A station list surveyed from `tie_in` (north, east, TVD) through the model.
-ClearanceWellFile clearance_surveyed(const std::vector<Station>& stations, const Eigen::Vector3d& tie_in,
-                                     const std::string& path, const std::string& name, double radius_m,
-                                     const StationListModel& model) {
+// How a station list is surveyed from `tie_in` (north, east, TVD) through the model.
+SurveyOptions station_list_options(const StationListModel& model, const Eigen::Vector3d& tie_in) {
   SurveyOptions o;
   o.reference = AzimuthReference::Grid;  // the azimuths as listed: no correction
   o.north.declination_known = o.north.convergence_known = true;
@@ -127,13 +125,20 @@ ClearanceWellFile clearance_surveyed(const std::vector<Station>& stations, const
   o.latitude_deg = model.latitude_deg;
   o.first_station_surveyed = model.first_station_surveyed;
   o.tie_in = tie_in;
-  Survey survey(o);
+  return o;
+}
+
+// A station list surveyed from `tie_in` through the model.
+ClearanceWellFile clearance_surveyed(const std::vector<Station>& stations, const Eigen::Vector3d& tie_in,
+                                     const std::string& path, const std::string& name, double radius_m,
+                                     const StationListModel& model) {
+  Survey survey(station_list_options(model, tie_in));
   try {
     for (const Station& s : stations) survey.add(s);
   } catch (const StationError& e) {
     throw std::runtime_error(path + ": " + e.what());
   }
-  return {clearance_well(survey, name, radius_m), "as listed", o.tool_code->name};
+  return {clearance_well(survey, name, radius_m), "as listed", survey.options().tool_code->name};
 }
 
 // The station list's stations and the position its first row gives.
@@ -174,25 +179,56 @@ ClearanceWellFile read_clearance_well_below(const std::string& path, const std::
   const auto [stations, tie_in] = clearance_station_list(path);
   // The whole well first: where the kick-off's point is, and its direction there.
   const ClearanceWell whole = clearance_surveyed(stations, tie_in, path, name, radius_m, model).well;
-  const auto& p = whole.stations;
-  if (!(kick_off_md_m >= p.front().md_m && kick_off_md_m < p.back().md_m))
-    throw std::runtime_error(path + ": the sidetrack's kick-off at MD " + clearance_md_text(kick_off_md_m) +
+  return clearance_well_below(stations, whole.stations, path, name, radius_m, model, kick_off_md_m);
+}
+
+ClearanceWellFile clearance_well_below(const std::vector<Station>& stations, const std::vector<WellPoint>& p,
+                                       const std::string& where, const std::string& name, double radius_m,
+                                       const StationListModel& model, double kick_off_md_m) {
+  if (p.size() != stations.size() || p.empty())
+    throw std::invalid_argument(where + ": a well's course must have one point per station");
+  if (!(kick_off_md_m >= p.front().md_m && kick_off_md_m <= p.back().md_m))
+    throw std::runtime_error(where + ": the sidetrack's kick-off at MD " + clearance_md_text(kick_off_md_m) +
                              " m is not within the well (MD " + clearance_md_text(p.front().md_m) + " to " +
                              clearance_md_text(p.back().md_m) + " m)");
-  std::size_t k = 0;
-  while (p[k + 1].md_m <= kick_off_md_m) ++k;
-  const WellPoint at = p[k].md_m == kick_off_md_m ? p[k] : interpolate_course(p[k], p[k + 1], kick_off_md_m);
-  std::vector<Station> below;
-  Station first = stations[k];
-  first.md_m = kick_off_md_m;
-  first.inclination_deg = at.inclination_deg;
-  first.magnetic_azimuth_deg = at.azimuth_deg;
-  below.push_back(first);
-  for (const Station& s : stations)
-    if (s.md_m > kick_off_md_m) below.push_back(s);
-  StationListModel from_kick_off = model;
-  from_kick_off.first_station_surveyed = true;
-  return clearance_surveyed(below, at.position, path, name, radius_m, from_kick_off);
+  SidetrackView view(kick_off_md_m, model, where);
+  for (std::size_t i = 0; i < stations.size(); ++i) view.add(stations[i], p[i]);
+  return {clearance_well(*view.survey(), name, radius_m), "as listed", view.survey()->options().tool_code->name};
+}
+
+SidetrackView::SidetrackView(double kick_off_md_m, StationListModel model, std::string where)
+    : kick_off_md_m_(kick_off_md_m), model_(std::move(model)), where_(std::move(where)) {
+  model_.first_station_surveyed = true;  // the kick-off is the well's first station surveyed
+  clearance_tool_code(model_.error_model);  // a tool code that cannot be read is said now, not at the kick-off
+}
+
+std::optional<WellPoint> SidetrackView::add(const Station& station, const WellPoint& course_point) {
+  try {
+    if (survey_) {
+      survey_->add(station);
+      return well_point(survey_->rows().back());
+    }
+    if (course_point.md_m < kick_off_md_m_) {
+      above_ = std::make_pair(station, course_point);
+      return std::nullopt;
+    }
+    // The kick-off: at this station, or on the course between the one above and this one.
+    const bool at_station = course_point.md_m == kick_off_md_m_;
+    if (!at_station && !above_)
+      throw std::runtime_error(where_ + ": the sidetrack's kick-off at MD " + clearance_md_text(kick_off_md_m_) +
+                               " m is above the well's first station (MD " + clearance_md_text(course_point.md_m) + " m)");
+    const WellPoint at = at_station ? course_point : interpolate_course(above_->second, course_point, kick_off_md_m_);
+    Station first = at_station ? station : above_->first;
+    first.md_m = kick_off_md_m_;
+    first.inclination_deg = at.inclination_deg;
+    first.magnetic_azimuth_deg = at.azimuth_deg;
+    survey_.emplace(station_list_options(model_, at.position));
+    survey_->add(first);
+    if (!at_station) survey_->add(station);
+    return well_point(survey_->rows().back());
+  } catch (const StationError& e) {
+    throw std::runtime_error(where_ + ": " + e.what());
+  }
 }
 
 }  // namespace plumb::survey

@@ -14,13 +14,15 @@ namespace plumb::components {
 
 struct ClearanceCliOptions {
   std::vector<std::string> offsets;                               // offset wells' files
+  // Offset wells that are sidetracks of the reference: each kicks off it at its own first station.
+  std::vector<std::string> sidetracks;
   double reference_radius_m = 0.4572, offset_radius_m = 0.3048;  // 36 in and 24 in holes
   survey::SeparationRule rule;
   survey::ClearanceLevels levels;
 };
 
-// --offset (repeated; required where `offsets_required`), --reference-radius, --offset-radius, --k,
-// --sigma-pa, --surface-margin, --warning, --alarm.
+// --offset and --sidetrack (repeated; one of them required where `offsets_required`),
+// --reference-radius, --offset-radius, --k, --sigma-pa, --surface-margin, --warning, --alarm.
 void add_clearance_options(CLI::App& app, ClearanceCliOptions& o, bool offsets_required);
 
 // Throws std::invalid_argument (a usage error) for a rule, levels or radii that cannot work.

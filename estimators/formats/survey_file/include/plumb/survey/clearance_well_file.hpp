@@ -5,7 +5,10 @@
 #pragma once
 
 #include <limits>
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "plumb/survey/clearance.hpp"
 
@@ -41,5 +44,40 @@ ClearanceWellFile read_clearance_well(const std::string& path, const std::string
 // survey file, and for a kick-off outside the well.
 ClearanceWellFile read_clearance_well_below(const std::string& path, const std::string& name, double radius_m,
                                             const StationListModel& model, double kick_off_md_m);
+
+// The same from the well's stations as a station list holds them (md, inclination, azimuth in the
+// wells' common north) and its course at those stations (`course[i]` the point of `stations[i]`),
+// through a SidetrackView. std::runtime_error naming `where` for a kick-off outside the course.
+ClearanceWellFile clearance_well_below(const std::vector<Station>& stations, const std::vector<WellPoint>& course,
+                                       const std::string& where, const std::string& name, double radius_m,
+                                       const StationListModel& model, double kick_off_md_m);
+
+// A well seen from a sidetrack that kicks off it at `kick_off_md_m`, built station by station: the
+// well's stations in order, each with its point on the well's course. The first point is the
+// course at the kick-off (at a station, or interpolated between the two around it, with its
+// direction there), tied in at its own position and surveyed as the first station; every station
+// below follows, through the station-list model. What `plumb clearance --sidetrack` does with a
+// file (clearance_well_below) and plumb-survey with the well it is drilling, one station at a time:
+// a station's point does not change with the stations after it, so both see the same points.
+class SidetrackView {
+ public:
+  // Throws for an error model that cannot be read (as clearance_tool_code).
+  SidetrackView(double kick_off_md_m, StationListModel model, std::string where);
+
+  // The well's next station and its point on the course. Its point as the sidetrack sees it, or
+  // nothing above the kick-off. Throws std::runtime_error naming `where` for a station the survey
+  // refuses, and for a kick-off above the well's first station.
+  std::optional<WellPoint> add(const Station& station, const WellPoint& course_point);
+  double kick_off_md_m() const { return kick_off_md_m_; }
+  // The survey from the kick-off; null until a station reached it.
+  const Survey* survey() const { return survey_ ? &*survey_ : nullptr; }
+
+ private:
+  double kick_off_md_m_;
+  StationListModel model_;
+  std::string where_;
+  std::optional<std::pair<Station, WellPoint>> above_;  // the last station above the kick-off
+  std::optional<Survey> survey_;
+};
 
 }  // namespace plumb::survey
