@@ -90,17 +90,18 @@ std::string difference_json(const AttitudeDifference& d) {
   return json_text(j);
 }
 
-void FoxgloveDifferences::attitude(const topics::Attitude& a, double rx_ms) {
+std::optional<AttitudeDifference> PluginDifferences::attitude(const topics::Attitude& a, double rx_ms) {
   const std::optional<AttitudeDifference> d = differences_.update(a, rx_ms * 1e-3);
-  if (!d) return;
+  if (!d || hub_ == nullptr) return d;
   const std::string topic = difference_topic(d->tool, d->estimator);
   auto channel = channels_.find(topic);
   if (channel == channels_.end())
-    channel = channels_.emplace(topic, hub_.advertise(topic, kDifferenceSchemaName, difference_schema(), "json", "jsonschema"))
+    channel = channels_.emplace(topic, hub_->advertise(topic, kDifferenceSchemaName, difference_schema(), "json", "jsonschema"))
                   .first;
   const std::string text = difference_json(*d);
-  hub_.publish(channel->second, static_cast<std::uint64_t>(rx_ms * 1e6),
-               std::make_shared<const std::vector<std::uint8_t>>(text.begin(), text.end()));
+  hub_->publish(channel->second, static_cast<std::uint64_t>(rx_ms * 1e6),
+                std::make_shared<const std::vector<std::uint8_t>>(text.begin(), text.end()));
+  return d;
 }
 
 }  // namespace plumb::display_component

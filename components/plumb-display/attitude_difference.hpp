@@ -1,7 +1,8 @@
 // Two or more plugins of one tool side by side: each one's newest estimate against the tool's
-// reference plugin (the first by name among those heard from in the last few seconds), as the page's
-// differences() computes it (web/index.html), for Foxglove: one JSON channel per tool and plugin,
-// "plumb-display/difference/<tool>/<plugin>". No DDS, no sockets.
+// reference plugin (the first by name among those heard from in the last few seconds), computed
+// here once for both readers: the page (the "diff" of each estimate's JSON, json.hpp; the page only
+// draws it) and Foxglove (one JSON channel per tool and plugin,
+// "plumb-display/difference/<tool>/<plugin>"). No DDS, no sockets.
 #pragma once
 
 #include <cstdint>
@@ -51,14 +52,16 @@ std::string difference_json(const AttitudeDifference& d);
 extern const char* const kDifferenceSchemaName;
 std::string difference_schema();
 
-// Publishes each difference on its channel of the Foxglove hub (advertised at its first message).
-class FoxgloveDifferences {
+// Each estimate's difference, computed once: returned for the page's JSON and, with a Foxglove hub,
+// published on its channel there (advertised at its first message).
+class PluginDifferences {
  public:
-  explicit FoxgloveDifferences(FoxgloveHub& hub) : hub_(hub) {}
-  void attitude(const topics::Attitude& a, double rx_ms);
+  explicit PluginDifferences(FoxgloveHub* hub = nullptr) : hub_(hub) {}
+  // `rx_ms`: when the display took it, ms since the epoch (wall_clock_ms()).
+  std::optional<AttitudeDifference> attitude(const topics::Attitude& a, double rx_ms);
 
  private:
-  FoxgloveHub& hub_;
+  FoxgloveHub* hub_;
   AttitudeDifferences differences_;
   std::map<std::string, std::uint32_t> channels_;  // topic -> channel id
 };

@@ -18,7 +18,7 @@ bool starts_with(const std::string& s, const char* prefix) { return s.rfind(pref
 
 struct DdsFeed::Stream {
   virtual ~Stream() = default;
-  virtual std::size_t drain(Hub& hub, const AttitudeObserver& observer) = 0;
+  virtual std::size_t drain(Hub& hub, PluginDifferences& differences) = 0;
 };
 
 namespace {
@@ -27,14 +27,16 @@ template <class M> class TypedStream final : public DdsFeed::Stream {
  public:
   explicit TypedStream(transport::Reader<M> reader) : reader_(std::move(reader)) {}
 
-  std::size_t drain(Hub& hub, const DdsFeed::AttitudeObserver& observer) override {
+  std::size_t drain(Hub& hub, PluginDifferences& differences) override {
     std::size_t n = 0;
     while (reader_.take(taken_, kTakeBatch) > 0) {
       const double rx = wall_clock_ms();
       for (const M& m : taken_) {
-        deliver(hub, m, rx);
-        if constexpr (std::is_same_v<M, topics::Attitude>)
-          if (observer) observer(m, rx);
+        if constexpr (std::is_same_v<M, topics::Attitude>) {
+          deliver(hub, m, rx, differences.attitude(m, rx));
+        } else {
+          deliver(hub, m, rx);
+        }
       }
       n += taken_.size();
     }
@@ -42,7 +44,7 @@ template <class M> class TypedStream final : public DdsFeed::Stream {
   }
 
  private:
-  static void deliver(Hub& hub, const topics::Attitude& a, double rx) {
+  static void deliver(Hub& hub, const topics::Attitude& a, double rx, const std::optional<AttitudeDifference>& difference) {
     const std::string key = a.tool_id + "/" + a.estimator;
     HistoryPoint p;
     p.rx_ms = rx;
@@ -51,7 +53,7 @@ template <class M> class TypedStream final : public DdsFeed::Stream {
     p.toolface = a.gravity_toolface_deg;
     p.rpm = a.rpm;
     p.flags = a.flags;
-    hub.attitude(key, attitude_json(a, key, rx), p);
+    hub.attitude(key, attitude_json(a, key, rx, difference), p);
   }
   static void deliver(Hub& hub, const topics::ComponentStatus& s, double rx) {
     const std::string key = s.component + "@" + s.host;
@@ -72,8 +74,8 @@ template <class M> class TypedStream final : public DdsFeed::Stream {
 
 }  // namespace
 
-DdsFeed::DdsFeed(transport::Participant& participant, Hub& hub, AttitudeObserver observer)
-    : participant_(participant), hub_(hub), observer_(std::move(observer)) {
+DdsFeed::DdsFeed(transport::Participant& participant, Hub& hub, PluginDifferences& differences)
+    : participant_(participant), hub_(hub), differences_(differences) {
   const std::string status = transport::topic_names::kStatus;
   streams_.push_back(std::make_unique<TypedStream<topics::ComponentStatus>>(transport::make_reader<topics::ComponentStatus>(
       participant_, status, transport::default_qos_for_topic(status), [this] { wake(); })));
@@ -129,7 +131,7 @@ std::size_t DdsFeed::poll(std::chrono::milliseconds timeout) {
     pending_ = false;
   }
   std::size_t n = 0;
-  for (auto& s : streams_) n += s->drain(hub_, observer_);
+  for (auto& s : streams_) n += s->drain(hub_, differences_);
   return n;
 }
 

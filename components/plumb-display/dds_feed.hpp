@@ -7,13 +7,13 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <mutex>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "attitude_difference.hpp"
 #include "hub.hpp"
 #include "plumb/transport/transport.hpp"
 
@@ -21,10 +21,9 @@ namespace plumb::display_component {
 
 class DdsFeed {
  public:
-  // Called on the feed's thread with every attitude taken and when (ms since the epoch): the
-  // Foxglove differences (attitude_difference.hpp).
-  using AttitudeObserver = std::function<void(const topics::Attitude&, double rx_ms)>;
-  DdsFeed(transport::Participant& participant, Hub& hub, AttitudeObserver observer = {});
+  // `differences`: every attitude taken goes through it (on the feed's thread), and its difference
+  // from the tool's reference plugin goes to the page with the estimate.
+  DdsFeed(transport::Participant& participant, Hub& hub, PluginDifferences& differences);
   ~DdsFeed();
   // Waits up to `timeout` for data, hands everything taken to the hub, and every half second
   // subscribes to topics that appeared. Returns how many messages it took.
@@ -39,7 +38,7 @@ class DdsFeed {
 
   transport::Participant& participant_;
   Hub& hub_;
-  AttitudeObserver observer_;
+  PluginDifferences& differences_;
   // Before the readers: a vendor thread may call wake() until the last reader is gone.
   std::mutex mutex_;
   std::condition_variable cv_;
