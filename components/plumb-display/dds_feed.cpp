@@ -1,7 +1,9 @@
 #include "dds_feed.hpp"
 
 #include <chrono>
+#include <set>
 #include <type_traits>
+#include <utility>
 
 #include "json.hpp"
 #include "plumb/transport/topic_names.hpp"
@@ -19,6 +21,8 @@ bool starts_with(const std::string& s, const char* prefix) { return s.rfind(pref
 struct DdsFeed::Stream {
   virtual ~Stream() = default;
   virtual std::size_t drain(Hub& hub, PluginDifferences& differences) = 0;
+  // The topic's last writer is gone: what the stream showed leaves the page (attitudes only).
+  virtual void gone(Hub&, PluginDifferences&) {}
 };
 
 namespace {
@@ -33,6 +37,7 @@ template <class M> class TypedStream final : public DdsFeed::Stream {
       const double rx = wall_clock_ms();
       for (const M& m : taken_) {
         if constexpr (std::is_same_v<M, topics::Attitude>) {
+          shown_.emplace(m.tool_id, m.estimator);
           deliver(hub, m, rx, differences.attitude(m, rx));
         } else {
           deliver(hub, m, rx);
@@ -41,6 +46,15 @@ template <class M> class TypedStream final : public DdsFeed::Stream {
       n += taken_.size();
     }
     return n;
+  }
+
+  void gone(Hub& hub, PluginDifferences& differences) override {
+    drain(hub, differences);  // its last estimates first: they would bring the cards back after
+    for (const auto& [tool, estimator] : shown_) {
+      differences.gone(tool, estimator);
+      hub.forget_attitude(tool + "/" + estimator);
+    }
+    shown_.clear();
   }
 
  private:
@@ -70,6 +84,7 @@ template <class M> class TypedStream final : public DdsFeed::Stream {
 
   transport::Reader<M> reader_;
   std::vector<M> taken_;
+  std::set<std::pair<std::string, std::string>> shown_;  // tool, estimator: the estimates it brought
 };
 
 }  // namespace
@@ -103,7 +118,9 @@ void DdsFeed::discover() {
   const auto attitude_type = topics::type_support<topics::Attitude>().type_name;
   const auto survey_type = topics::type_support<topics::SurveyStation>().type_name;
   auto wake = [this] { this->wake(); };
+  std::set<std::string> written;
   for (const auto& t : participant_.discovered_topics()) {
+    if (t.writers > 0) written.insert(t.name);
     if (t.writers == 0 || topics_.count(t.name)) continue;
     const auto qos = transport::default_qos_for_topic(t.name);
     if (starts_with(t.name, transport::topic_names::kAttitudePrefix) && t.type_name == attitude_type) {
@@ -116,6 +133,17 @@ void DdsFeed::discover() {
       continue;
     }
     topics_.insert(t.name);
+    discovered_streams_[t.name] = streams_.back().get();
+  }
+  // An estimator's topic without a writer (the plugin unloaded, its host gone): its cards and
+  // differences go, as its Foxglove channel does (docs/display.md). The reader stays: a plugin
+  // loaded again comes back.
+  for (const auto& [name, stream] : discovered_streams_) {
+    if (written.count(name)) {
+      unwritten_.erase(name);
+    } else if (unwritten_.insert(name).second) {
+      stream->gone(hub_, differences_);
+    }
   }
 }
 

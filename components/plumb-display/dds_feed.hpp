@@ -7,6 +7,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <set>
@@ -45,6 +46,8 @@ class DdsFeed {
   bool pending_ = false;
   std::vector<std::unique_ptr<Stream>> streams_;
   std::set<std::string> topics_;
+  std::map<std::string, Stream*> discovered_streams_;  // attitudes and surveys by topic (owned by streams_)
+  std::set<std::string> unwritten_;  // of those, topics whose last writer is gone
   std::chrono::steady_clock::time_point last_discovery_{};
 };
 

@@ -119,6 +119,56 @@ TEST(AttitudeDifference, PublishedOnAJsonChannelPerToolAndPlugin) {
   EXPECT_TRUE(message["toolface"].is_null()) << "an angle not compared is null";
 }
 
+std::vector<std::string> difference_ops(FoxgloveClient& client, const std::string& op) {
+  std::vector<FoxgloveFrame> frames;
+  std::vector<std::string> out;
+  if (!client.next(frames, 100)) return out;
+  for (const auto& f : frames) {
+    if (f.binary) continue;
+    const auto j = nlohmann::json::parse(f.text);
+    if (j["op"] != op) continue;
+    if (op == "advertise")
+      for (const auto& c : j["channels"]) out.push_back(c["topic"].get<std::string>() + "#" + std::to_string(c["id"].get<int>()));
+    if (op == "unadvertise")
+      for (const auto& id : j["channelIds"]) out.push_back("#" + std::to_string(id.get<int>()));
+  }
+  return out;
+}
+
+// A difference channel lives as long as its plugin has a difference: its topic's last writer gone
+// (unloaded) takes it away, and so does the plugin becoming its tool's reference (the reference it
+// was compared with unloaded).
+TEST(AttitudeDifference, ChannelUnadvertisedWhenItsPluginIsGoneOrBecomesTheReference) {
+  FoxgloveHub hub;
+  PluginDifferences diffs(&hub);
+  const auto client = hub.join();
+  EXPECT_TRUE(difference_ops(*client, "advertise").empty()) << "serverInfo only: nothing advertised yet";
+  diffs.attitude(diff_attitude("compensated", 2, 10, 350, 10), 100000);
+  diffs.attitude(diff_attitude("integral", 2, 10, 350, 10), 100100);
+  diffs.attitude(diff_attitude("static", 2, 10, 350, 10), 100200);
+  const auto advertised = difference_ops(*client, "advertise");
+  ASSERT_EQ(advertised.size(), 2u);
+  EXPECT_EQ(advertised[0].rfind("plumb-display/difference/sim/integral#", 0), 0u) << advertised[0];
+  const std::string integral_id = advertised[0].substr(advertised[0].find('#'));
+  const std::string static_id = advertised[1].substr(advertised[1].find('#'));
+  diffs.gone("sim", "integral");
+  EXPECT_EQ(difference_ops(*client, "unadvertise"), std::vector<std::string>{integral_id});
+  EXPECT_EQ(hub.stats().channels, 1u);
+  diffs.gone("sim", "compensated");  // the reference: it had no channel
+  EXPECT_TRUE(diffs.attitude(diff_attitude("zz", 2, 10, 350, 10), 100300)) << "against static now";
+  EXPECT_FALSE(diffs.attitude(diff_attitude("static", 2, 10, 350, 10), 100400)) << "the reference now";
+  const auto ops = difference_ops(*client, "unadvertise");
+  EXPECT_EQ(ops, std::vector<std::string>{static_id}) << "static has no difference any more";
+  EXPECT_EQ(hub.stats().channels, 1u) << "zz's";
+  // integral loaded again is the reference (the first by name): static has a difference again, on
+  // its channel again, with its old id (the protocol allows the reuse for the same type).
+  EXPECT_FALSE(diffs.attitude(diff_attitude("integral", 2, 10, 350, 10), 100500));
+  EXPECT_TRUE(diffs.attitude(diff_attitude("static", 2, 10, 350, 10), 100600));
+  const auto again = difference_ops(*client, "advertise");
+  ASSERT_EQ(again.size(), 1u);
+  EXPECT_EQ(again[0], "plumb-display/difference/sim/static" + static_id);
+}
+
 // The page draws what it is given: each estimate's JSON carries its difference (page_test.js reads
 // this form), null for the reference.
 TEST(AttitudeDifference, EachEstimatesPageJsonCarriesItsDifference) {
