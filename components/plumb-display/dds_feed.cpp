@@ -1,6 +1,8 @@
 #include "dds_feed.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <map>
 #include <set>
 #include <type_traits>
 #include <utility>
@@ -13,6 +15,8 @@ namespace {
 
 // Messages per batched take.
 constexpr std::size_t kTakeBatch = 64;
+// A plugin that sent nothing for this long while another of its tool did is gone (docs/display.md).
+constexpr double kSilentMs = 10000;
 
 bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 
@@ -23,6 +27,10 @@ struct DdsFeed::Stream {
   virtual std::size_t drain(Hub& hub, PluginDifferences& differences) = 0;
   // The topic's last writer is gone: what the stream showed leaves the page (attitudes only).
   virtual void gone(Hub&, PluginDifferences&) {}
+  // Attitudes only: the newest reception per tool (ms since the epoch), and the estimates silent
+  // for `silent_ms` while their tool's newest is not, forgotten as gone() does.
+  virtual void newest_by_tool(std::map<std::string, double>&) const {}
+  virtual void forget_silent(Hub&, PluginDifferences&, const std::map<std::string, double>&, double) {}
 };
 
 namespace {
@@ -37,7 +45,7 @@ template <class M> class TypedStream final : public DdsFeed::Stream {
       const double rx = wall_clock_ms();
       for (const M& m : taken_) {
         if constexpr (std::is_same_v<M, topics::Attitude>) {
-          shown_.emplace(m.tool_id, m.estimator);
+          shown_[{m.tool_id, m.estimator}] = rx;
           deliver(hub, m, rx, differences.attitude(m, rx));
         } else {
           deliver(hub, m, rx);
@@ -50,14 +58,29 @@ template <class M> class TypedStream final : public DdsFeed::Stream {
 
   void gone(Hub& hub, PluginDifferences& differences) override {
     drain(hub, differences);  // its last estimates first: they would bring the cards back after
-    for (const auto& [tool, estimator] : shown_) {
-      differences.gone(tool, estimator);
-      hub.forget_attitude(tool + "/" + estimator);
-    }
+    for (const auto& [shown, rx] : shown_) forget(hub, differences, shown.first, shown.second);
     shown_.clear();
   }
 
+  void newest_by_tool(std::map<std::string, double>& newest) const override {
+    for (const auto& [shown, rx] : shown_) newest[shown.first] = std::max(newest[shown.first], rx);
+  }
+
+  void forget_silent(Hub& hub, PluginDifferences& differences, const std::map<std::string, double>& newest,
+                     double silent_ms) override {
+    std::erase_if(shown_, [&](const auto& entry) {
+      const auto& [shown, rx] = entry;
+      if (newest.at(shown.first) - rx <= silent_ms) return false;
+      forget(hub, differences, shown.first, shown.second);
+      return true;
+    });
+  }
+
  private:
+  static void forget(Hub& hub, PluginDifferences& differences, const std::string& tool, const std::string& estimator) {
+    differences.gone(tool, estimator);
+    hub.forget_attitude(tool + "/" + estimator);
+  }
   static void deliver(Hub& hub, const topics::Attitude& a, double rx, const std::optional<AttitudeDifference>& difference) {
     const std::string key = a.tool_id + "/" + a.estimator;
     HistoryPoint p;
@@ -84,7 +107,7 @@ template <class M> class TypedStream final : public DdsFeed::Stream {
 
   transport::Reader<M> reader_;
   std::vector<M> taken_;
-  std::set<std::pair<std::string, std::string>> shown_;  // tool, estimator: the estimates it brought
+  std::map<std::pair<std::string, std::string>, double> shown_;  // (tool, estimator) -> last received, ms
 };
 
 }  // namespace
@@ -145,6 +168,12 @@ void DdsFeed::discover() {
       stream->gone(hub_, differences_);
     }
   }
+  // A plugin silent while another of its tool is not is gone too: a Fast DDS participant (2.9.1) is
+  // never told that a Cyclone DDS writer was deleted while its participant lives on, so an unloaded
+  // plugin's topic keeps its writer there.
+  std::map<std::string, double> newest;
+  for (const auto& [name, stream] : discovered_streams_) stream->newest_by_tool(newest);
+  for (const auto& [name, stream] : discovered_streams_) stream->forget_silent(hub_, differences_, newest, kSilentMs);
 }
 
 std::size_t DdsFeed::poll(std::chrono::milliseconds timeout) {
