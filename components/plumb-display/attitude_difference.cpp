@@ -58,6 +58,13 @@ std::optional<AttitudeDifference> AttitudeDifferences::update(const topics::Atti
   return d;
 }
 
+void AttitudeDifferences::forget(const std::string& tool, const std::string& estimator) {
+  const auto it = newest_.find(tool);
+  if (it == newest_.end()) return;
+  it->second.erase(estimator);
+  if (it->second.empty()) newest_.erase(it);
+}
+
 std::string difference_topic(const std::string& tool, const std::string& estimator) {
   return "plumb-display/difference/" + (tool.empty() ? std::string("unknown") : tool) + "/" + estimator;
 }
@@ -90,17 +97,29 @@ std::string difference_json(const AttitudeDifference& d) {
   return json_text(j);
 }
 
-void FoxgloveDifferences::attitude(const topics::Attitude& a, double rx_ms) {
+std::optional<AttitudeDifference> PluginDifferences::attitude(const topics::Attitude& a, double rx_ms) {
   const std::optional<AttitudeDifference> d = differences_.update(a, rx_ms * 1e-3);
-  if (!d) return;
+  if (!d) unadvertise(a.tool_id, a.estimator);
+  if (!d || hub_ == nullptr) return d;
   const std::string topic = difference_topic(d->tool, d->estimator);
   auto channel = channels_.find(topic);
   if (channel == channels_.end())
-    channel = channels_.emplace(topic, hub_.advertise(topic, kDifferenceSchemaName, difference_schema(), "json", "jsonschema"))
+    channel = channels_.emplace(topic, hub_->advertise(topic, kDifferenceSchemaName, difference_schema(), "json", "jsonschema"))
                   .first;
   const std::string text = difference_json(*d);
-  hub_.publish(channel->second, static_cast<std::uint64_t>(rx_ms * 1e6),
-               std::make_shared<const std::vector<std::uint8_t>>(text.begin(), text.end()));
+  hub_->publish(channel->second, static_cast<std::uint64_t>(rx_ms * 1e6),
+                std::make_shared<const std::vector<std::uint8_t>>(text.begin(), text.end()));
+  return d;
+}
+
+void PluginDifferences::gone(const std::string& tool, const std::string& estimator) {
+  differences_.forget(tool, estimator);
+  unadvertise(tool, estimator);
+}
+
+void PluginDifferences::unadvertise(const std::string& tool, const std::string& estimator) {
+  if (hub_ == nullptr || channels_.erase(difference_topic(tool, estimator)) == 0) return;
+  hub_->unadvertise(difference_topic(tool, estimator));
 }
 
 }  // namespace plumb::display_component

@@ -1,7 +1,8 @@
 // Two or more plugins of one tool side by side: each one's newest estimate against the tool's
-// reference plugin (the first by name among those heard from in the last few seconds), as the page's
-// differences() computes it (web/index.html), for Foxglove: one JSON channel per tool and plugin,
-// "plumb-display/difference/<tool>/<plugin>". No DDS, no sockets.
+// reference plugin (the first by name among those heard from in the last few seconds), computed
+// here once for both readers: the page (the "diff" of each estimate's JSON, json.hpp; the page only
+// draws it) and Foxglove (one JSON channel per tool and plugin,
+// "plumb-display/difference/<tool>/<plugin>"). No DDS, no sockets.
 #pragma once
 
 #include <cstdint>
@@ -35,6 +36,9 @@ class AttitudeDifferences {
   // The toolface (at the window's end, turning with the tool) is carried to the reference's window
   // end with the plugin's rpm, and only when the two ends are within 1 s.
   std::optional<AttitudeDifference> update(const topics::Attitude& a, double rx_s);
+  // The plugin's estimates of that tool are no more (its topic has no writer): it is nobody's
+  // reference from now on.
+  void forget(const std::string& tool, const std::string& estimator);
 
  private:
   struct Newest {
@@ -51,15 +55,24 @@ std::string difference_json(const AttitudeDifference& d);
 extern const char* const kDifferenceSchemaName;
 std::string difference_schema();
 
-// Publishes each difference on its channel of the Foxglove hub (advertised at its first message).
-class FoxgloveDifferences {
+// Each estimate's difference, computed once: returned for the page's JSON and, with a Foxglove hub,
+// published on its channel there: advertised at its first difference, unadvertised when the plugin
+// has none any more (docs/display.md).
+class PluginDifferences {
  public:
-  explicit FoxgloveDifferences(FoxgloveHub& hub) : hub_(hub) {}
-  void attitude(const topics::Attitude& a, double rx_ms);
+  explicit PluginDifferences(FoxgloveHub* hub = nullptr) : hub_(hub) {}
+  // `rx_ms`: when the display took it, ms since the epoch (wall_clock_ms()).
+  // A plugin that has no difference (it is its tool's reference now: the one it was compared with is
+  // gone) loses its channel.
+  std::optional<AttitudeDifference> attitude(const topics::Attitude& a, double rx_ms);
+  // Its attitude topic has no writer any more (unloaded, its host gone): forgotten, and its channel
+  // unadvertised, as every channel of a topic whose last writer is gone.
+  void gone(const std::string& tool, const std::string& estimator);
 
  private:
-  FoxgloveHub& hub_;
+  FoxgloveHub* hub_;
   AttitudeDifferences differences_;
+  void unadvertise(const std::string& tool, const std::string& estimator);
   std::map<std::string, std::uint32_t> channels_;  // topic -> channel id
 };
 

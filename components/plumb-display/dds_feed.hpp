@@ -7,13 +7,14 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
-#include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "attitude_difference.hpp"
 #include "hub.hpp"
 #include "plumb/transport/transport.hpp"
 
@@ -21,10 +22,9 @@ namespace plumb::display_component {
 
 class DdsFeed {
  public:
-  // Called on the feed's thread with every attitude taken and when (ms since the epoch): the
-  // Foxglove differences (attitude_difference.hpp).
-  using AttitudeObserver = std::function<void(const topics::Attitude&, double rx_ms)>;
-  DdsFeed(transport::Participant& participant, Hub& hub, AttitudeObserver observer = {});
+  // `differences`: every attitude taken goes through it (on the feed's thread), and its difference
+  // from the tool's reference plugin goes to the page with the estimate.
+  DdsFeed(transport::Participant& participant, Hub& hub, PluginDifferences& differences);
   ~DdsFeed();
   // Waits up to `timeout` for data, hands everything taken to the hub, and every half second
   // subscribes to topics that appeared. Returns how many messages it took.
@@ -39,13 +39,15 @@ class DdsFeed {
 
   transport::Participant& participant_;
   Hub& hub_;
-  AttitudeObserver observer_;
+  PluginDifferences& differences_;
   // Before the readers: a vendor thread may call wake() until the last reader is gone.
   std::mutex mutex_;
   std::condition_variable cv_;
   bool pending_ = false;
   std::vector<std::unique_ptr<Stream>> streams_;
   std::set<std::string> topics_;
+  std::map<std::string, Stream*> discovered_streams_;  // attitudes and surveys by topic (owned by streams_)
+  std::set<std::string> unwritten_;  // of those, topics whose last writer is gone
   std::chrono::steady_clock::time_point last_discovery_{};
 };
 

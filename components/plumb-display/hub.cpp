@@ -51,7 +51,10 @@ std::optional<std::string> Outbox::next() {
     append_list(frame, kind, texts.size(), [&](std::size_t i) -> const std::string& { return *texts[i]; });
   }
   append_list(frame, "survey", stations_.size(), [&](std::size_t i) -> const std::string& { return *stations_[i]; });
+  const std::vector<std::string> gone(gone_.begin(), gone_.end());
+  append_list(frame, "gone", gone.size(), [&](std::size_t i) { return json_text(Json(gone[i])); });
   frame += '}';
+  gone_.clear();
   attitudes_.clear();
   states_.clear();
   stations_.clear();
@@ -90,6 +93,20 @@ void Hub::attitude(const std::string& key, const std::string& json, const Histor
         queue.pop_front();
         ++box->dropped_;
       }
+    }
+    box->cv_.notify_one();
+  }
+}
+
+void Hub::forget_attitude(const std::string& key) {
+  std::lock_guard lock(mutex_);
+  latest_attitude_.erase(key);
+  history_.erase(key);
+  for (const auto& box : outboxes_) {
+    {
+      std::lock_guard box_lock(box->mutex_);
+      box->attitudes_.erase(key);
+      box->gone_.insert(key);
     }
     box->cv_.notify_one();
   }

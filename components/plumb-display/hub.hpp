@@ -13,6 +13,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -51,7 +52,7 @@ class Outbox {
  private:
   friend class Hub;
   explicit Outbox(const HubOptions& options) : options_(options) {}
-  bool pending() const { return !attitudes_.empty() || !states_.empty() || !stations_.empty() || hello_; }
+  bool pending() const { return !attitudes_.empty() || !states_.empty() || !stations_.empty() || !gone_.empty() || hello_; }
 
   const HubOptions options_;  // a copy: a sender thread may hold its outbox a moment longer than the hub lives
   mutable std::mutex mutex_;
@@ -61,6 +62,7 @@ class Outbox {
   // "depth") and key (component@host, tool/offset well, tool).
   std::map<std::string, std::map<std::string, Text>> states_;
   std::deque<Text> stations_;
+  std::set<std::string> gone_;  // estimate streams (tool/estimator) whose cards leave the page
   Text hello_;  // snapshot for a browser that just joined: history and server settings
   bool closed_ = false;
   std::uint64_t dropped_ = 0, frames_ = 0;
@@ -81,6 +83,9 @@ class Hub {
   // Producer side (the DDS thread). `key` names the stream: tool/estimator, component@host,
   // tool#station, tool/offset well.
   void attitude(const std::string& key, const std::string& json, const HistoryPoint& point);
+  // The stream is no more (its estimator's topic has no writer): its latest estimate and history are
+  // forgotten and the pages drop its card (the frame's "gone" list).
+  void forget_attitude(const std::string& key);
   void status(const std::string& key, const std::string& json);
   void station(const std::string& key, const std::string& json);
   // The newest station's clearance against one offset well (the page shows the nearest).

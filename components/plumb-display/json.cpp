@@ -5,6 +5,14 @@
 #include <cstdint>
 
 namespace plumb::display_component {
+namespace {
+
+Json page_angle_difference(const std::optional<AngleDifference>& d, int decimals) {
+  if (!d) return nullptr;
+  return Json{{"d", json_number(d->degrees, decimals)}, {"sd", json_number(d->sd_degrees, decimals)}};
+}
+
+}  // namespace
 
 double wall_clock_ms() {
   const auto since_epoch = std::chrono::system_clock::now().time_since_epoch();
@@ -26,7 +34,8 @@ void append_json_string(std::string& out, const std::string& text) { out += json
 
 void append_json_number(std::string& out, double value, int decimals) { out += json_text(json_number(value, decimals)); }
 
-std::string attitude_json(const topics::Attitude& a, const std::string& key, double rx_ms) {
+std::string attitude_json(const topics::Attitude& a, const std::string& key, double rx_ms,
+                          const std::optional<AttitudeDifference>& difference) {
   Json j;
   j["k"] = key;
   j["tool"] = a.tool_id;
@@ -47,6 +56,14 @@ std::string attitude_json(const topics::Attitude& a, const std::string& key, dou
   j["n"] = a.samples_used;
   j["flags"] = a.flags;
   j["why"] = a.reason;
+  if (difference) {
+    j["diff"] = {{"ref", difference->reference},
+                 {"inc", page_angle_difference(difference->inclination, 4)},
+                 {"azi", page_angle_difference(difference->azimuth, 3)},
+                 {"tf", page_angle_difference(difference->toolface, 2)}};
+  } else {
+    j["diff"] = nullptr;
+  }
   return json_text(j);
 }
 

@@ -4,10 +4,12 @@
 // the page (web/index.html) is their only reader.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "attitude_difference.hpp"
 #include "plumb/topics/all.hpp"
 
 namespace plumb::display_component {
@@ -30,7 +32,11 @@ void append_json_number(std::string& out, double value, int decimals);
 double wall_clock_ms();
 
 // `rx_ms`: when the display took the message (wall_clock_ms()): the page's latency reference.
-std::string attitude_json(const topics::Attitude& a, const std::string& key, double rx_ms);
+// `difference`: the estimate against its tool's reference plugin (PluginDifferences), which the
+// page draws as it is ("diff": {"ref", "inc", "azi", "tf"}, each angle {"d", "sd"} or null; null
+// for the reference itself and a tool's only plugin): the page computes none of its own.
+std::string attitude_json(const topics::Attitude& a, const std::string& key, double rx_ms,
+                          const std::optional<AttitudeDifference>& difference = std::nullopt);
 std::string status_json(const topics::ComponentStatus& s, const std::string& key, double rx_ms);
 std::string station_json(const topics::SurveyStation& s, const std::string& key);
 std::string clearance_json(const topics::Clearance& c, const std::string& key);

@@ -49,14 +49,9 @@ int run(const Options& o) {
     foxglove_hub.emplace(fo);
   }
   auto conn = components::connect(o.transport, "plumb-display");
-  // Two or more plugins of one tool: their differences on Foxglove too (the page computes its own).
-  std::optional<FoxgloveDifferences> differences;
-  DdsFeed::AttitudeObserver observe_attitude;
-  if (foxglove_hub) {
-    differences.emplace(*foxglove_hub);
-    observe_attitude = [&differences](const topics::Attitude& a, double rx_ms) { differences->attitude(a, rx_ms); };
-  }
-  DdsFeed feed(*conn.participant, hub, observe_attitude);
+  // Two or more plugins of one tool: their differences, computed once, for the page and Foxglove.
+  PluginDifferences differences(foxglove_hub ? &*foxglove_hub : nullptr);
+  DdsFeed feed(*conn.participant, hub, differences);
   // The servers start after DDS. One whose port is taken is said, and the other serves alone (a
   // display that still shows something beats none on a rig); with neither, the program ends.
   std::vector<std::string> refusals;

@@ -73,6 +73,7 @@ class Host {
         input_(*conn_.participant, {o.input_topic, o.tool_id, o.reliable}),
         status_(*conn_.participant, "plumb-estimator"),
         service_(*conn_.participant, o.name.empty() ? components::host_name() : o.name) {
+    status_.set_name(service_.name());  // plumb status shows it: two hosts on one computer are told apart
     for (const auto& slot : first_runner_.slots()) publication_.add(slot.name, slot.estimator->info().uses_gyro);
     if (o.compare_truth) truth_ = std::make_unique<TruthLookup>(*conn_.participant, o.truth_topic);
     open_resume_record();

@@ -14,7 +14,7 @@ std::string host_name() {
 }
 
 topics::ComponentStatus make_status(const std::string& component, const std::string& state, const CounterList& counters,
-                                    const std::string& last_error) {
+                                    const std::string& last_error, const std::string& name) {
   topics::ComponentStatus s;
   s.component = bounded(component, topics::ComponentStatus::kComponentMax);
   s.host = bounded(host_name(), topics::ComponentStatus::kHostMax);
@@ -26,6 +26,7 @@ topics::ComponentStatus make_status(const std::string& component, const std::str
     s.counters.push_back({bounded(name, topics::Counter::kNameMax), value});
   }
   s.last_error = bounded(last_error, topics::ComponentStatus::kLastErrorMax);
+  s.name = bounded(name, topics::ComponentStatus::kNameMax);
   return s;
 }
 
@@ -37,7 +38,7 @@ StatusReporter::StatusReporter(transport::Participant& participant, std::string 
       next_(std::chrono::steady_clock::now() + period_) {}
 
 void StatusReporter::publish(const std::string& state, const CounterList& counters, const std::string& last_error) {
-  writer_.write(make_status(component_, state, counters, last_error));
+  writer_.write(make_status(component_, state, counters, last_error, name_));
 }
 
 // The last words: the participant goes right after the reporter, and would take them along before
@@ -46,6 +47,7 @@ void StatusReporter::publish(const std::string& state, const CounterList& counte
 StatusReporter::StatusReporter(StatusReporter&& other) noexcept
     : writer_(std::move(other.writer_)),
       component_(std::move(other.component_)),
+      name_(std::move(other.name_)),
       period_(other.period_),
       next_(other.next_),
       owns_writer_(std::exchange(other.owns_writer_, false)) {}

@@ -1,12 +1,14 @@
 // plumb status: every plumb component seen on the network, with its host and state, from the
 // plumb/status topic each one publishes once a second (components::StatusReporter). What a field
 // engineer runs on either computer to check the link.
+#include <algorithm>
 #include <chrono>
 #include <iomanip>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <sstream>
+#include <tuple>
 
 #include "plumb/components/cli.hpp"
 #include "plumb/transport/topic_names.hpp"
@@ -61,14 +63,15 @@ int run_status(const StatusOptions& o) {
   auto reader = transport::make_reader<topics::ComponentStatus>(*conn.participant, transport::topic_names::kStatus,
                                                                  transport::default_qos_for_topic(transport::topic_names::kStatus));
   components::install_stop_handler();
-  std::map<std::pair<std::string, std::string>, Seen> seen;  // by (host, component)
+  // By host, component and name: two estimator hosts on one computer, each with its --name, are two rows.
+  std::map<std::tuple<std::string, std::string, std::string>, Seen> seen;
   const auto t0 = std::chrono::steady_clock::now();
   const auto until = t0 + std::chrono::duration<double>(o.wait_s);
   topics::ComponentStatus msg;
   while (!components::g_stop && std::chrono::steady_clock::now() < until) {
     reader.wait(std::chrono::milliseconds(100));
     while (reader.take(msg)) {
-      auto& s = seen[{msg.host, msg.component}];
+      auto& s = seen[{msg.host, msg.component, msg.name}];
       s.last = msg;
       ++s.messages;
     }
@@ -77,12 +80,18 @@ int run_status(const StatusOptions& o) {
     std::cerr << nothing_seen(conn.options, conn.transport->vendor_version(), o.wait_s) << std::endl;
     return 1;
   }
+  // NAME: what the component was named (plumb-estimator --name: what plumb component and plumb
+  // param call it), "-" for none.
+  std::size_t name_width = 6;
+  for (const auto& [key, s] : seen) name_width = std::max(name_width, std::get<2>(key).size() + 2);
   std::cout << std::left << std::setw(20) << "HOST" << std::setw(22) << "COMPONENT" << std::setw(10) << "STATE"
-            << "REPORTS  LAST ERROR\n";
+            << std::setw(static_cast<int>(name_width)) << "NAME" << "REPORTS  LAST ERROR\n";
   bool healthy = true;
   for (const auto& [key, s] : seen) {
-    std::cout << std::setw(20) << key.first << std::setw(22) << key.second << std::setw(10) << s.last.state
-              << std::setw(9) << s.messages << (s.last.last_error.empty() ? "-" : s.last.last_error) << '\n';
+    const auto& [host, component, name] = key;
+    std::cout << std::setw(20) << host << std::setw(22) << component << std::setw(10) << s.last.state
+              << std::setw(static_cast<int>(name_width)) << (name.empty() ? "-" : name) << std::setw(9) << s.messages
+              << (s.last.last_error.empty() ? "-" : s.last.last_error) << '\n';
     if (o.counters) print_counters(s.last);
     healthy = healthy && s.last.state != "degraded" && s.last.state != "failed";
   }
@@ -93,7 +102,8 @@ int run_status(const StatusOptions& o) {
 }  // namespace
 
 void add_status_verb(CLI::App& app, Verbs& verbs) {
-  auto* status = app.add_subcommand("status", "List every plumb component seen on the network, with its host and state");
+  auto* status = app.add_subcommand("status", "List every plumb component seen on the network, with its host, state and "
+                                                "name (an estimator host's --name)");
   status->footer("Listens to plumb/status (each component reports once a second and keeps its last report for "
                  "monitors that start later: a running component answers at once). Exit 1 if nobody answered or "
                  "a component is degraded or failed.");

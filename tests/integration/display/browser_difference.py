@@ -4,10 +4,13 @@ Chromium driver of browser.py): each card but the reference's carries its differ
 reference, live. usage:
   browser_difference.py URL --key TOOL/ESTIMATOR --reference ESTIMATOR [--inc-tol D] [--azi-tol D]
                         [--invalid TOOL/ESTIMATOR] [--seconds S] [--screenshot OUT.png]
+                        [--gone TOOL/ESTIMATOR --handshake DIR]
 --key: its card shows "minus REFERENCE: inclination ±d ± s°, azimuth ±d ± s°, toolface ..." with |d|
 within the tolerances (--inc-tol, --azi-tol, --tf-tol), and the numbers change while the page is open. --invalid: a card whose plugin gives
 no angle on a turning tool (static): its difference shows "-" for each angle. The reference's own
-card shows none. Prints "ok   - ..." / "FAIL - ..." lines; exit 1 if any failed, 77 without Chromium."""
+card shows none. --gone with --handshake: once those checks are done, writes DIR/browser-ready, waits
+for DIR/unloaded (the test unloaded that plugin), and then its card leaves the open page while the
+reference's stays. Prints "ok   - ..." / "FAIL - ..." lines; exit 1 if any failed, 77 without Chromium."""
 import argparse
 import os
 import re
@@ -58,6 +61,8 @@ def main():
     p.add_argument("--invalid")
     p.add_argument("--seconds", type=float, default=3)
     p.add_argument("--screenshot")
+    p.add_argument("--gone")
+    p.add_argument("--handshake")
     a = p.parse_args()
     tool = a.key.split("/")[0]
     ref_key = tool + "/" + a.reference
@@ -109,6 +114,21 @@ def main():
         if a.screenshot:
             browser.screenshot(a.screenshot, 1600, 1000)
             print(f"screenshot {a.screenshot}", flush=True)
+        if a.gone and a.handshake:
+            check(a.gone in read_diffs(browser), f"card {a.gone} shown before its plugin is unloaded")
+            open(os.path.join(a.handshake, "browser-ready"), "w").close()
+            unloaded = os.path.join(a.handshake, "unloaded")
+            deadline = time.time() + 40
+            while not os.path.exists(unloaded) and time.time() < deadline:
+                time.sleep(0.1)
+            t0 = time.time()
+            diffs = read_diffs(browser)
+            while a.gone in diffs and time.time() < t0 + 20:
+                time.sleep(0.2)
+                diffs = read_diffs(browser)
+            check(os.path.exists(unloaded) and a.gone not in diffs,
+                  f"card {a.gone} left the open page {time.time() - t0:.1f} s after its plugin was unloaded (cards {sorted(diffs)})")
+            check(ref_key in diffs, f"the reference's card {ref_key} stays")
     finally:
         browser.close()
         shutil.rmtree(profile, ignore_errors=True)

@@ -4,7 +4,8 @@
 # component load integral, then static (the commands and plumb-display on transport D) -> headless
 # Chromium: integral's card shows its difference from compensated, small and live; static's (no
 # angle while turning) shows "-" for each; compensated's none; and a plain Foxglove client gets
-# integral's difference on plumb-display/difference/rig1/integral. Exit 77 without Chromium.
+# integral's difference on plumb-display/difference/rig1/integral. Then integral is unloaded: its card
+# leaves the open page and its channel is unadvertised. Exit 77 without Chromium.
 # usage: display_difference.sh BIN_DIR H D DOMAIN ARTIFACT_DIR
 set -uo pipefail
 bin=$1 host_t=$2 display_t=$3
@@ -38,16 +39,34 @@ for p in integral static; do
   out=$("$bin/plumb" component load "$name" $p --transport "$display_t" --wait 20 2>&1) &&
     pass "load $p while the tool turns: $out" || fail "load $p: $out"
 done
+# Both watch while integral is unloaded: its card leaves the open page, its Foxglove channel is
+# unadvertised (its topic has no writer any more).
+hs=$work/handshake
+mkdir -p "$hs"
 python3 "$here/browser_difference.py" "http://127.0.0.1:$port/" --key rig1/integral --reference compensated \
-  --inc-tol 0.1 --azi-tol 1.5 --invalid rig1/static \
-  --screenshot "$artifacts/display_difference_${host_t}_${display_t}.png" > "$work/browser.log" 2>&1
+  --inc-tol 0.1 --azi-tol 1.5 --invalid rig1/static --gone rig1/integral --handshake "$hs" \
+  --screenshot "$artifacts/display_difference_${host_t}_${display_t}.png" > "$work/browser.log" 2>&1 &
+browser=$!
+# The same difference on the display's Foxglove server, a JSON channel of its own.
+python3 "$here/foxglove_difference.py" "ws://127.0.0.1:$fox_port/" rig1 integral compensated --inc-tol 0.1 --azi-tol 1.5 \
+  --handshake "$hs" > "$work/foxglove.log" 2>&1 &
+foxglove=$!
+for _ in $(seq 400); do
+  [ -e "$hs/browser-ready" ] && [ -e "$hs/foxglove-ready" ] && break
+  kill -0 $browser 2>/dev/null || kill -0 $foxglove 2>/dev/null || break
+  sleep 0.1
+done
+if [ -e "$hs/browser-ready" ] && [ -e "$hs/foxglove-ready" ]; then
+  out=$("$bin/plumb" component unload "$name" integral --transport "$display_t" --wait 20 2>&1) &&
+    pass "unload integral: $out" || fail "unload integral: $out"
+fi
+touch "$hs/unloaded"
+wait $browser
 rc=$?
 cat "$work/browser.log"
 [ $rc -eq 77 ] && exit 77
 [ $rc -eq 0 ] || fail "browser checks (exit $rc)"
-# The same difference on the display's Foxglove server, a JSON channel of its own.
-python3 "$here/foxglove_difference.py" "ws://127.0.0.1:$fox_port/" rig1 integral compensated --inc-tol 0.1 --azi-tol 1.5 \
-  > "$work/foxglove.log" 2>&1 || fail "Foxglove difference channel"
+wait $foxglove || fail "Foxglove difference channel"
 cat "$work/foxglove.log"
 [ $fails -eq 0 ] || { tail -5 "$work/host.log"; tail -5 "$work/display.log"; }
 finish

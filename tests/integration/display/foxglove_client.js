@@ -3,7 +3,8 @@
 // @foxglove/omgidl-serialization (the channel's IDL schema, the CDR decoding). Connects, checks
 // serverInfo and every advertised channel, subscribes to the given topics, decodes each message
 // with the channel's own schema, unsubscribes the first topic near the end and checks that it
-// stops, and writes what it decoded as JSON for the comparison with `plumb topic echo --csv`.
+// stops, and writes what it decoded as JSON for the comparison with `plumb topic echo --csv`. A JSON
+// channel (plumb-display's own: the difference of two plugins) is decoded as JSON.
 // usage: NODE_PATH=DIR/node_modules node foxglove_client.js URL SECONDS OUT.json TOPIC...
 // TOPIC "*" subscribes to every channel (the benchmark's client); SIGTERM ends it early, writing the JSON.
 "use strict";
@@ -45,7 +46,9 @@ client.on("advertise", (channels) => {
                            schemaEncoding: c.schemaEncoding, schemaLength: c.schema.length });
     let reader = null;
     try {
-      reader = new MessageReader(c.schemaName, parseIDL(c.schema));
+      // A channel the display computes itself (its difference of two plugins) is JSON, as Foxglove reads it.
+      reader = c.encoding === "json" ? { readMessage: (bytes) => JSON.parse(Buffer.from(bytes).toString("utf8")) }
+                                     : new MessageReader(c.schemaName, parseIDL(c.schema));
     } catch (e) {
       problems.push(`${c.topic}: schema ${c.schemaName} not accepted: ${e.message}`);
       continue;

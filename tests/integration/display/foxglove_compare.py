@@ -5,7 +5,8 @@ serverInfo, every channel's encoding (cdr), schema encoding (omgidl) and IDL typ
 the 1 kHz sensor stream received (>= 99 %, or every loss counted by plumb-display's
 foxglove_dropped), no message after unsubscribing. Prints ok/FAIL lines; exit 1 on any failure.
 The shipped Foxglove layout's message paths are checked against what was decoded: each names an
-advertised topic and a field its messages have.
+advertised topic and a field its messages have; among them the difference of two plugins, on
+plumb-display's JSON channel plumb-display/difference/<tool>/<plugin>.
 usage: foxglove_compare.py CLIENT.json RAW_ECHO.csv ATTITUDE_ECHO.csv RAW_TOPIC ATTITUDE_TOPIC INCLINATION LAYOUT.json"""
 import csv
 import json
@@ -48,9 +49,13 @@ for topic, type_name in expected_types.items():
     c = channels.get(topic)
     check(c is not None and c["encoding"] == "cdr" and c["schemaEncoding"] == "omgidl" and c["schemaName"] == type_name
           and c["schemaLength"] > 0, f"channel {topic}: {c}")
+# The DDS topics: CDR with their IDL; the display's own channels (plumb-display/...): JSON.
+own = [c for c in r["channels"] if c["topic"].startswith("plumb-display/")]
+check(all(c["encoding"] == "json" and c["schemaEncoding"] == "jsonschema" and c["schemaName"] == "plumb.display.AttitudeDifference"
+          for c in own), f"the display's own channels JSON: {sorted(c['topic'] for c in own)}")
 check(all(c["encoding"] == "cdr" and c["schemaEncoding"] == "omgidl" and c["schemaName"].startswith("plumb::msg::")
-          for c in r["channels"]), f"{len(r['channels'])} channels, all cdr / omgidl / plumb::msg::*: " +
-      ", ".join(sorted(channels)))
+          for c in r["channels"] if c not in own), f"{len(r['channels']) - len(own)} DDS channels, all cdr / omgidl / plumb::msg::*: " +
+      ", ".join(sorted(t for t in channels if not t.startswith("plumb-display/"))))
 
 # The 1 kHz stream: every sample by its sequence number.
 raw = r["topics"].get(raw_topic, {"messages": 0, "values": []})
@@ -136,6 +141,9 @@ for path in paths:
             break
     if not isinstance(v, (int, float)):
         bad.append(f"{path}: not a number ({v!r})")
+difference = [p for p in paths if p.startswith("plumb-display/difference/")]
+check(difference and {p.partition(".")[0] for p in difference} <= set(decoded),
+      f"the layout plots a difference of two plugins, on a channel decoded here: {sorted({p.partition('.')[0] for p in difference})}")
 check(paths and not bad, f"the Foxglove layout's {len(paths)} paths name advertised topics and numeric fields" +
       ("" if not bad else ": " + "; ".join(bad)))
 sys.exit(1 if fails else 0)

@@ -56,10 +56,10 @@ output_matches "Foxglove off" "$bin/plumb-display" --transport "$display_t" --po
   pass "--no-foxglove serves the page only, and says so" || fail "--no-foxglove"
 
 # Truth: I = 2 deg, A = 200 deg, 240 rpm (two turns a window), 1000 samples a second, one a message:
-# a 1 kHz topic. Windows of 0.5 s: two estimates a second. The compensated estimator: the one the
-# shipped Foxglove layout plots.
+# a 1 kHz topic. Windows of 0.5 s: two estimates a second. The compensated and integral estimators
+# side by side: the ones the shipped Foxglove layout plots, with their difference.
 inc=2 azi=200 run_s=14
-"$bin/plumb-estimator" --transport "$host_t" --input plumb/sensor/raw --plugin compensated --window 0.5 --tool-id rig1 -q \
+"$bin/plumb-estimator" --transport "$host_t" --input plumb/sensor/raw --plugin compensated --plugin integral --window 0.5 --tool-id rig1 -q \
   > "$work/host.log" 2>&1 &
 pids+=($!)
 "$bin/plumb" topic echo plumb/sensor/raw --csv --transport "$display_t" --timeout $((run_s + 6)) > "$work/raw.csv" 2> "$work/raw.err" &
@@ -77,7 +77,7 @@ pids+=($!)
 # stays for most of the run.
 wait_for "$work/raw.csv" "^[0-9]+," 30 || fail "no sensor data reached plumb topic echo"
 node "$here/foxglove_client.js" "ws://127.0.0.1:$port/" $((run_s - 5)) "$work/client.json" \
-  plumb/sensor/raw plumb/attitude/compensated plumb/status > "$work/client.log" 2>&1 || fail "the node client failed: $(tail -5 "$work/client.log")"
+  plumb/sensor/raw plumb/attitude/compensated plumb/status plumb-display/difference/rig1/integral > "$work/client.log" 2>&1 || fail "the node client failed: $(tail -5 "$work/client.log")"
 wait "$echo_raw" "$echo_att"
 if [ -s "$work/client.json" ]; then
   python3 "$here/foxglove_compare.py" "$work/client.json" "$work/raw.csv" "$work/attitude.csv" plumb/sensor/raw \

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# plumb component / plumb param on a secured domain (one vendor, loopback): the plumb-operator
+# plumb component / plumb param on a secured domain (loopback): the plumb-operator
 # identity loads and tunes a secured estimator host's plugins; the plumb-monitor identity may not
 # send a request (one line saying so, nothing applied); an unsecured plumb reaches no host.
-# usage: secure_component.sh BIN_DIR VENDOR DOMAIN
+# The host on VENDOR, the commands on CLI_VENDOR (default: the same).
+# usage: secure_component.sh BIN_DIR VENDOR DOMAIN [CLI_VENDOR]
 set -uo pipefail
 bin=$1
 export PLUMB_TRANSPORT=$2 PLUMB_DOMAIN_ID=$3
+cli_t=${4:-$2}
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../lib.sh"
 start_work_with_programs
@@ -15,18 +17,18 @@ for n in plumb-estimator plumb-operator plumb-monitor; do
   "$bin/plumb" security create-identity "$ks" $n > /dev/null || fail "create-identity $n"
 done
 id() { echo "$ks/enclaves/$1"; }
-"$bin/plumb-estimator" --security "$(id plumb-estimator)" --name secured --plugin static --quiet > "$work/host.out" 2>&1 &
+"$bin/plumb-estimator" --transport "$2" --security "$(id plumb-estimator)" --name secured --plugin static --quiet > "$work/host.out" 2>&1 &
 pids+=($!)
 
-out=$("$bin/plumb" component load secured integral --security "$(id plumb-operator)" --wait 15 2>&1) &&
+out=$(env PLUMB_TRANSPORT="$cli_t" "$bin/plumb" component load secured integral --security "$(id plumb-operator)" --wait 15 2>&1) &&
   pass "operator: $out" || fail "operator's load: $out"
-out=$("$bin/plumb" param set secured integral window 4 --security "$(id plumb-operator)" --wait 15 2>&1) &&
+out=$(env PLUMB_TRANSPORT="$cli_t" "$bin/plumb" param set secured integral window 4 --security "$(id plumb-operator)" --wait 15 2>&1) &&
   pass "operator: $out" || fail "operator's param set: $out"
 expect_failure "the monitor identity may not send requests" "plumb: .*this identity may not send requests" \
-  "$bin/plumb" component unload secured integral --security "$(id plumb-monitor)" --wait 3
+  env PLUMB_TRANSPORT="$cli_t" "$bin/plumb" component unload secured integral --security "$(id plumb-monitor)" --wait 3
 expect_failure "an unsecured plumb reaches no secured host" "no estimator host named 'secured' answered" \
-  "$bin/plumb" component unload secured integral --wait 3
-out=$("$bin/plumb" component list secured --security "$(id plumb-operator)" --wait 15 2>&1)
+  env PLUMB_TRANSPORT="$cli_t" "$bin/plumb" component unload secured integral --wait 3
+out=$(env PLUMB_TRANSPORT="$cli_t" "$bin/plumb" component list secured --security "$(id plumb-operator)" --wait 15 2>&1)
 grep -q "integral" <<< "$out" && pass "integral still loaded: neither refused request was applied" ||
   fail "component list: $out"
 n=$(grep -c "(from " "$work/host.out")

@@ -3,7 +3,8 @@
 # component at once, and a monitor already matched gets a component's last words ("stopping")
 # when it is stopped with SIGINT.
 #   plumb-sim (1 s of data, then "finished", then lingers without reporting again) and
-#   plumb-estimator run on WRITER's vendor; the monitors on READER's.
+#   plumb-estimator (--name late-host-DOMAIN: plumb status shows that name beside the computer's)
+#   run on WRITER's vendor; the monitors on READER's.
 # With a volatile plumb/status the late `plumb status` would never see plumb-sim: it reports
 # nothing more after "finished".
 # usage: late_status.sh BIN_DIR WRITER_TRANSPORT READER_TRANSPORT DOMAIN
@@ -19,7 +20,8 @@ logs() { for f in "$work"/*.log "$work"/*.txt; do [ -f "$f" ] && { echo "--- $f"
 
 "$bin/plumb-test-faults-watch" --transport "$r" > watch.log 2> watch_err.log &
 watch=$!
-"$bin/plumb-estimator" --transport "$w" --input plumb/sensor/raw --plugin integral --window 0.5 -q > host.log 2>&1 &
+name=late-host-$PLUMB_DOMAIN_ID  # its name for plumb component, not the computer's: plumb status shows it
+"$bin/plumb-estimator" --transport "$w" --name "$name" --input plumb/sensor/raw --plugin integral --window 0.5 -q > host.log 2>&1 &
 host=$!
 pids+=($watch $host)
 wait_for watch.log "^status [0-9.]+ plumb-estimator running" 30 || { fail "the early monitor got no status of the host"; logs; finish; }
@@ -39,6 +41,10 @@ else
 fi
 grep -qE "plumb-estimator +running" late_status.txt && pass "and the running host's" ||
   fail "late plumb status lacks plumb-estimator: $(cat late_status.txt)"
+grep -qE "^$(hostname) +plumb-estimator +running +$name +[0-9]" late_status.txt &&
+  grep -qE "^HOST +COMPONENT +STATE +NAME +REPORTS" late_status.txt && grep -qE "plumb-sim +finished +- +[0-9]" late_status.txt &&
+  pass "its row names it '$name' (--name) beside the computer's name; plumb-sim, without a name, shows -" ||
+  fail "late plumb status does not show the host's --name '$name': $(cat late_status.txt)"
 "$bin/plumb" topic echo plumb/status --transport "$r" --count 2 --timeout 10 > late_echo.txt 2>&1 &&
   grep -q "state: \"finished\"" late_echo.txt && pass "a late 'plumb topic echo plumb/status' gets it too" ||
   fail "late echo: $(cat late_echo.txt)"

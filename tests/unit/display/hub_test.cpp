@@ -96,6 +96,34 @@ TEST(DisplayHub, ClearancesKeepTheNewestPerOffsetWell) {
   EXPECT_EQ(hub.stats().clearances, 3u);
 }
 
+// A plugin unloaded (its topic without a writer): its card leaves the pages there, and a page that
+// opens later never gets it.
+TEST(DisplayHub, ForgottenStreamLeavesThePagesAndIsNotSentToLaterOnes) {
+  HubOptions o;
+  o.min_gap = std::chrono::milliseconds(0);
+  Hub hub(o);
+  auto early = hub.join();
+  ASSERT_TRUE(early->next());  // hello
+  hub.attitude("rig/integral", "{\"est\":\"integral\"}", point(1000, 1));
+  hub.attitude("rig/compensated", "{\"est\":\"compensated\"}", point(1000, 1));
+  hub.forget_attitude("rig/integral");
+  const auto update = early->next();
+  ASSERT_TRUE(update);
+  EXPECT_EQ(update->find("{\"est\":\"integral\"}"), std::string::npos) << "its queued estimate goes with it: " << *update;
+  EXPECT_NE(update->find("\"gone\":[\"rig/integral\"]"), std::string::npos) << *update;
+  hub.attitude("rig/compensated", "{}", point(2000, 1));
+  const auto next = early->next();
+  ASSERT_TRUE(next);
+  EXPECT_NE(next->find("\"gone\":[]"), std::string::npos) << "said once: " << *next;
+  auto late = hub.join();
+  const auto hello = late->next();
+  ASSERT_TRUE(hello);
+  EXPECT_EQ(hello->find("rig/integral"), std::string::npos) << "no history of it: " << *hello;
+  const auto first = late->next();
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->find("integral"), std::string::npos) << *first;
+}
+
 TEST(DisplayHub, FramesAreThrottledAndIdleLinksGetHeartbeats) {
   HubOptions o;
   o.min_gap = std::chrono::milliseconds(50);

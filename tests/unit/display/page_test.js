@@ -9,9 +9,9 @@ const page = fs.readFileSync(process.argv[2], "utf8");
 const begin = page.indexOf("// PURE BEGIN"), end = page.indexOf("// PURE END");
 assert(begin > 0 && end > begin, "the page marks its pure part");
 const {angleText, wrapsAround, LENGTH_UNITS, cardTitle, counterText, tickStep, nearestOffsets, stationSd,
-       TOOLFACE_TRACE_MAX_RPM, depthText, sectionAlong, differences, differenceText} = new Function(page.slice(begin, end) +
+       TOOLFACE_TRACE_MAX_RPM, depthText, sectionAlong, differenceText} = new Function(page.slice(begin, end) +
   "\nreturn {angleText, wrapsAround, LENGTH_UNITS, cardTitle, counterText, tickStep, nearestOffsets, stationSd, " +
-  "TOOLFACE_TRACE_MAX_RPM, depthText, sectionAlong, differences, differenceText};")();
+  "TOOLFACE_TRACE_MAX_RPM, depthText, sectionAlong, differenceText};")();
 
 let checks = 0;
 const check = (ok, what) => { assert(ok, what); ++checks; };
@@ -56,38 +56,21 @@ check(depthText({md: 10, flags: 0}, 1, "m") === "" && depthText(undefined, 1, "m
   check(sectionAlong(s, undefined) === -4 && sectionAlong(s, null) === -4, "no direction sent: the station's own");
 }
 
-// Two plugins of one tool: each against the tool's reference (first by name), angles wrapped,
-// sigmas combined, an angle that either does not give left out, stale estimates ignored.
+// Two plugins of one tool: plumb-display computes each difference (attitude_difference.cpp, checked by
+// plumb_display_test's AttitudeDifference.*) and the page draws the one it is given with the
+// estimate, as the display's JSON carries it (DisplayJson.AttitudeCarriesItsDifferenceForThePage).
 {
-  const att = (k, tool, est, inc, azi, gtf, flags, rx, t = 10) => ({k, tool, est, inc, azi, gtf, flags, rx, t,
-                                                                  sinc: 0.03, sazi: 0.3, stf: 0.4});
-  const d = differences([att("sim/static", "sim", "static", 2.0, 359, 10, 7, 1000),
-                         att("sim/integral", "sim", "integral", 2.05, 1, 350, 7, 1000),
-                         att("sim/compensated", "sim", "compensated", 1.98, 0, 10, 3, 1000),
-                         att("other/static", "other", "static", 5, 80, 0, 7, 1000),
-                         att("sim/zz", "sim", "zz", 9, 9, 9, 7, -9000)], 1500, 5000);
-  check(!d.has("sim/compensated"), "the reference gets no difference");
-  check(d.get("sim/integral").ref === "compensated", "the reference is the first by name: " + d.get("sim/integral").ref);
-  check(d.get("sim/static").ref === "compensated" && !d.has("other/static"), "a tool with one estimator: none");
-  const i = d.get("sim/integral");
-  check(Math.abs(i.inc.d - 0.07) < 1e-9 && Math.abs(i.inc.sd - Math.hypot(0.03, 0.03)) < 1e-12, "inclination " + JSON.stringify(i.inc));
-  check(Math.abs(i.azi.d - 1) < 1e-9, "azimuth 1 minus 0 is +1: " + i.azi.d);
-  check(i.tf === null, "the reference gives no toolface: none");
-  const s = d.get("sim/static");
-  check(Math.abs(s.azi.d + 1) < 1e-9, "azimuth 359 minus 0 wraps to -1: " + s.azi.d);
-  check(!d.has("sim/zz"), "a stale estimate is left out");
-  // The toolface at the window's end: carried to the reference's window end with the plugin's rpm.
-  const turning = (k, est, gtf, t) => Object.assign(att(k, "a", est, 2, 10, gtf, 7, 1000, t), {rpm: 10});
-  const same = differences([turning("a/x", "x", 350, 10), turning("a/y", "y", 10, 10)], 1000, 5000);
-  check(Math.abs(same.get("a/y").tf.d - 20) < 1e-9, "toolface 10 minus 350 is +20: " + JSON.stringify(same.get("a/y").tf));
-  const later = differences([turning("a/x", "x", 350, 10), turning("a/y", "y", 10, 10.5)], 1000, 5000);
-  check(Math.abs(later.get("a/y").tf.d + 10) < 1e-9, "10 at 10.5 s, turning 10 rpm, was -20 at 10 s: -10 from 350: " +
-        JSON.stringify(later.get("a/y").tf));
-  const apart = differences([turning("a/x", "x", 350, 10), turning("a/y", "y", 10, 11.5)], 1000, 5000);
-  check(apart.get("a/y").tf === null && apart.get("a/y").inc !== null, "windows ending more than 1 s apart: no toolface");
-  check(differenceText(i) === "minus compensated: inclination +0.070 ± 0.042°, azimuth +1.00 ± 0.42°, toolface -",
-        differenceText(i));
-  check(differenceText(undefined) === "", "no difference: no text");
+  check(!/function differences\(/.test(page) && !page.includes("differences("), "the page computes no difference of its own");
+  check(/e\.diff\.textContent = differenceText\(a\.diff\)/.test(page), "a card draws the difference its estimate came with");
+  const a = JSON.parse('{"k":"sim/integral","tool":"sim","est":"integral","inc":2.07,"flags":7,' +
+                       '"diff":{"ref":"compensated","inc":{"d":0.07,"sd":0.0424},"azi":{"d":-1,"sd":0.424},"tf":null}}');
+  check(differenceText(a.diff) === "minus compensated: inclination +0.070 ± 0.042°, azimuth −1.00 ± 0.42°, toolface -",
+        differenceText(a.diff));
+  const none = JSON.parse('{"diff":{"ref":"compensated","inc":null,"azi":null,"tf":null}}').diff;
+  check(differenceText(none) === "minus compensated: inclination -, azimuth -, toolface -", differenceText(none));
+  check(differenceText(null) === "" && differenceText(undefined) === "", "the reference's own estimate (diff null): no text");
+  check(differenceText({ref: "x", inc: {d: 0.5, sd: 0}, azi: null, tf: null}) === "minus x: inclination +0.500°, azimuth -, toolface -",
+        "no sigma given: none shown");
 }
 
 // The history breaks its line where the angle wraps, not elsewhere.

@@ -17,15 +17,19 @@ using CounterList = std::vector<std::pair<std::string, std::uint64_t>>;
 
 std::string host_name();
 
-// One status message; counters beyond the IDL bound are dropped (the first ones are kept).
+// One status message; counters beyond the IDL bound are dropped (the first ones are kept). `name`:
+// what the component was named on its command line (plumb-estimator --name), "" for none.
 topics::ComponentStatus make_status(const std::string& component, const std::string& state, const CounterList& counters,
-                                    const std::string& last_error);
+                                    const std::string& last_error, const std::string& name = "");
 
 class StatusReporter {
  public:
   static constexpr std::chrono::milliseconds kLastWordsWait{1000};
   StatusReporter(transport::Participant& participant, std::string component, double period_s = 1.0,
                  const std::string& topic = transport::topic_names::kStatus);
+  // The component's own name (plumb-estimator --name), sent with every report: `plumb status` shows
+  // it beside the computer's.
+  void set_name(std::string name) { name_ = std::move(name); }
   // The last report ("stopping", "finished", or "failed" before an exit) must reach the monitors
   // already matched: the reporter waits, at most kLastWordsWait, until every one of them has
   // acknowledged it before its writer goes (and the participant after it).
@@ -41,6 +45,7 @@ class StatusReporter {
  private:
   transport::Writer<topics::ComponentStatus> writer_;
   std::string component_;
+  std::string name_;
   std::chrono::steady_clock::duration period_;
   std::chrono::steady_clock::time_point next_;
   bool owns_writer_ = true;  // false once moved from: nothing left to deliver
