@@ -62,8 +62,8 @@ class ClippedSpin {
 // attitude needs). None without the field across the axis at both ends: unlike a loop that must
 // follow every reading, one angle before and one after are weighed against their own noise
 // (StreamFaults::axial_turn_seen), so a part across the axis of a twentieth of the field will do
-// (a tool within 3 degrees of the field line; a tenth of it is 46 uT's 4.7, tens of times the
-// noise of a tool's magnetometers).
+// (the axis within 3 degrees of the field line: 2.3 uT of 46, tens of times the noise of a tool's
+// magnetometers).
 std::optional<double> unseen_turn_across_gap(const InputReading& prev, const InputReading& in,
                                              const Eigen::Matrix3d& c_before, const Eigen::Matrix3d& c_after);
 

@@ -34,11 +34,10 @@ class StreamFaults {
   // The same gap as the filter bridges it, from the reading before (prev) to this one (in), the tool
   // frame to NED c_bn: the lost readings' share of the process noise of the epoch that bridges it.
   void bridge(const InputReading& prev, const InputReading& in, double dt_nominal, const Eigen::Matrix3d& c_bn);
-  // The last gap's turn about the tool's axis as the field across the
-  // axis shows it (unseen_turn_across_gap, the field across the axis after the gap `field_across`
-  // and its whole `field`, microtesla): the part of it to take, weighed against what the gap may
-  // hide about the axis and the magnetometers' noise; what the gap may hide about the axis shrinks
-  // to match.
+  // The last gap's turn about the tool's axis as the field across the axis shows it
+  // (unseen_turn_across_gap; the field's part across the axis after the gap `field_across` and its
+  // whole `field`, microtesla): the part of it to take, weighed against what the gap may hide about
+  // the axis and the magnetometers' noise; what the gap may hide about the axis shrinks to match.
   double axial_turn_seen(double turn, double field_across, double field);
   // The turn the gaps since the last epoch may hide, for the epoch; forgets it.
   void add_to(UnseenMotionNoise& noise);
