@@ -670,6 +670,26 @@ TEST(StrapdownInputs, AutoTakesAGyroToolWithDepthForADrillString) {
   EXPECT_TRUE(same_rows(auto_with_depth, rows_with(with_depth, "magnitude")));
   EXPECT_FALSE(same_rows(auto_with_depth, rows_with(with_depth, "glrt")));
   EXPECT_TRUE(same_rows(rows_with(without_depth, nullptr), rows_with(without_depth, "glrt")));
+  // Without a depth, auto's choice is a guess: a notice says what the run was taken for and how to
+  // say otherwise; nothing is said where the user chose, or where a depth decided.
+  const auto foot_notices = [&](const std::vector<Sample>& samples, const char* detector) {
+    estimator::Parameters p = parameters_for(scenario);
+    p["initial_azimuth_deg"] = std::to_string(scenario.plan.azimuth_deg);
+    if (detector) p["still_detector"] = detector;
+    Navigator nav(parse_parameters(p));
+    std::vector<Estimate> rows;
+    int said = 0;
+    for (const Sample& x : samples) {
+      nav.push(x, rows);
+      for (const std::string& n : nav.take_notices())
+        said += n.find("navigated as a foot or a hand") != std::string::npos &&
+                n.find("still_detector=magnitude") != std::string::npos;
+    }
+    return said;
+  };
+  EXPECT_EQ(foot_notices(without_depth, nullptr), 1);
+  EXPECT_EQ(foot_notices(without_depth, "glrt"), 0);
+  EXPECT_EQ(foot_notices(with_depth, nullptr), 0);
 }
 
 }  // namespace

@@ -279,6 +279,13 @@ void StillnessWatch::on_aligned(double t, bool lagging) {
   last_still_t_ = t;
   // From now on the detector sees w less the expected earth rate and bias: its long means restart.
   detector_.restart_stretch();
+  // still_detector=auto took a tool with neither a field nor a measured depth for a foot or a hand:
+  // a gyro-only drilling tool without a depth feed looks the same, and only its user knows.
+  if (config_.detector == DetectorChoice::Auto && mode() == StillnessConfig::Mode::Glrt)
+    notices_.push_back(
+        "no magnetometer and no measured depth before the alignment: navigated as a foot or a hand "
+        "(still_detector=auto chose the GLRT detector, without a drill string's model); a drilling tool "
+        "without either: give still_detector=magnitude");
 }
 
 // (The zero-velocity updates are what bounds the drift.)
