@@ -9,10 +9,11 @@ fail() { echo "FAIL - $*"; fails=$((fails + 1)); }
 # web server takes 2 s to let go of its page's port), and the next test may need them.
 stop_programs_and_remove_work() {
   local p deadline=$((SECONDS + 10))
+  # (|| true: a program that has already ended cannot be signalled, which is no failure of the test.)
   for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done
   for p in "${pids[@]}"; do
     while kill -0 "$p" 2>/dev/null && [ $SECONDS -lt $deadline ]; do sleep 0.1; done
-    kill -KILL "$p" 2>/dev/null || true
+    kill -KILL "$p" 2>/dev/null || true  # (the same: most have ended by now)
   done
   rm -rf "$work"
 }

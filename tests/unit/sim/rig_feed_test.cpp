@@ -14,37 +14,13 @@
 #include <string>
 #include <thread>
 
+#include "../wits/loopback_listener.hpp"
 #include "rig_feed.hpp"
 
 namespace plumb::sim_component {
 namespace {
 
 using namespace std::chrono_literals;
-
-// Listens on 127.0.0.1:`port` (0: a free port, written back); -1 when it cannot.
-int rig_feed_test_listen(int& port) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-  const int on = 1;
-  ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);
-  sockaddr_in a{};
-  a.sin_family = AF_INET;
-  a.sin_port = htons(static_cast<std::uint16_t>(port));
-  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (::bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 || ::listen(fd, 4) != 0) {
-    ::close(fd);
-    return -1;
-  }
-  socklen_t size = sizeof a;
-  ::getsockname(fd, reinterpret_cast<sockaddr*>(&a), &size);
-  port = ntohs(a.sin_port);
-  return fd;
-}
-
-int rig_feed_test_closed_port() {
-  int port = 0;
-  ::close(rig_feed_test_listen(port));
-  return port;
-}
 
 std::size_t rig_feed_test_count(const std::string& text, const std::string& what) {
   std::size_t n = 0;
@@ -53,13 +29,13 @@ std::size_t rig_feed_test_count(const std::string& text, const std::string& what
 }
 
 TEST(RigFeed, WaitsForALatePlumbWitsSayingSoThenSendsAFramePerInterval) {
-  const int port = rig_feed_test_closed_port();
+  const int port = test::loopback_closed_port();
   const std::string address = "127.0.0.1:" + std::to_string(port);
   std::atomic<int> listener{-1};
   std::thread late([&] {
     std::this_thread::sleep_for(300ms);
     int p = port;
-    listener = rig_feed_test_listen(p);
+    listener = test::loopback_listen(p);
   });
   RigFeed feed(address, 1.0);
   testing::internal::CaptureStdout();
@@ -89,7 +65,7 @@ TEST(RigFeed, WaitsForALatePlumbWitsSayingSoThenSendsAFramePerInterval) {
 }
 
 TEST(RigFeed, GivesUpWithTheReasonAndCountsTheFramesLost) {
-  const std::string address = "127.0.0.1:" + std::to_string(rig_feed_test_closed_port());
+  const std::string address = "127.0.0.1:" + std::to_string(test::loopback_closed_port());
   RigFeed feed(address, 1.0);
   testing::internal::CaptureStdout();
   EXPECT_FALSE(feed.connect(0.3));

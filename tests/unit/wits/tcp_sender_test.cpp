@@ -13,6 +13,7 @@
 #include <string>
 #include <thread>
 
+#include "loopback_listener.hpp"
 #include "plumb/wits/frame_writer.hpp"
 #include "plumb/wits/tcp_sender.hpp"
 
@@ -21,32 +22,6 @@ namespace {
 
 using namespace std::chrono_literals;
 using SenderTestClock = std::chrono::steady_clock;
-
-// Binds 127.0.0.1:`port` (0: any free port, written back) and listens; -1 when it cannot.
-int sender_test_listen(int& port) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-  const int on = 1;
-  ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);
-  sockaddr_in a{};
-  a.sin_family = AF_INET;
-  a.sin_port = htons(static_cast<std::uint16_t>(port));
-  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (::bind(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 || ::listen(fd, 4) != 0) {
-    ::close(fd);
-    return -1;
-  }
-  socklen_t size = sizeof a;
-  ::getsockname(fd, reinterpret_cast<sockaddr*>(&a), &size);
-  port = ntohs(a.sin_port);
-  return fd;
-}
-
-// A port nobody listens on: one that was free a moment ago.
-int sender_test_closed_port() {
-  int port = 0;
-  ::close(sender_test_listen(port));
-  return port;
-}
 
 // Accepts one connection (within 5 s) and reads it to its end.
 std::string sender_test_read_all(int listen_fd) {
@@ -62,7 +37,7 @@ std::string sender_test_read_all(int listen_fd) {
 
 TEST(WitsTcpSender, FramesArriveWhole) {
   int port = 0;
-  const int listener = sender_test_listen(port);
+  const int listener = test::loopback_listen(port);
   ASSERT_GE(listener, 0);
   TcpSender sender("127.0.0.1", port);
   EXPECT_EQ(sender.address(), "127.0.0.1:" + std::to_string(port));
@@ -80,7 +55,7 @@ TEST(WitsTcpSender, FramesArriveWhole) {
 }
 
 TEST(WitsTcpSender, ClosedPortFailsWithinTheDeadlineSayingWhy) {
-  const int port = sender_test_closed_port();
+  const int port = test::loopback_closed_port();
   TcpSender sender("127.0.0.1", port);
   const auto start = SenderTestClock::now();
   EXPECT_FALSE(sender.connect(500ms));
@@ -95,7 +70,7 @@ TEST(WitsTcpSender, ClosedPortFailsWithinTheDeadlineSayingWhy) {
 }
 
 TEST(WitsTcpSender, OneAttemptWhenNotWaiting) {
-  TcpSender sender("127.0.0.1", sender_test_closed_port());
+  TcpSender sender("127.0.0.1", test::loopback_closed_port());
   const auto start = SenderTestClock::now();
   EXPECT_FALSE(sender.connect(0ms));
   EXPECT_LT(SenderTestClock::now() - start, 1s);
@@ -103,7 +78,7 @@ TEST(WitsTcpSender, OneAttemptWhenNotWaiting) {
 }
 
 TEST(WitsTcpSender, StopEndsTheWait) {
-  TcpSender sender("127.0.0.1", sender_test_closed_port());
+  TcpSender sender("127.0.0.1", test::loopback_closed_port());
   int asked = 0;
   const auto start = SenderTestClock::now();
   EXPECT_FALSE(sender.connect(60s, [&] { return ++asked >= 3; }));
@@ -112,12 +87,12 @@ TEST(WitsTcpSender, StopEndsTheWait) {
 }
 
 TEST(WitsTcpSender, AListenerThatAppearsLateIsReached) {
-  int port = sender_test_closed_port();
+  int port = test::loopback_closed_port();
   std::atomic<int> listener{-1};
   std::thread late([&] {
     std::this_thread::sleep_for(400ms);
     int p = port;
-    listener = sender_test_listen(p);
+    listener = test::loopback_listen(p);
   });
   TcpSender sender("127.0.0.1", port);
   const bool connected = sender.connect(10s);
@@ -133,7 +108,7 @@ TEST(WitsTcpSender, AListenerThatAppearsLateIsReached) {
 
 TEST(WitsTcpSender, ALostReaderIsAFailedSendThenANewConnection) {
   int port = 0;
-  const int listener = sender_test_listen(port);
+  const int listener = test::loopback_listen(port);
   ASSERT_GE(listener, 0);
   TcpSender sender("127.0.0.1", port);
   ASSERT_TRUE(sender.connect(2s));

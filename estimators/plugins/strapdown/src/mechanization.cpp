@@ -27,22 +27,27 @@ inline Eigen::Matrix<double, 3, 2> tool_gyro_g(const Eigen::Matrix3d& c, const E
 
 }  // namespace
 
-Eigen::Vector3d mean_to_instant(const Eigen::Vector3d& mean_f, const Eigen::Vector3d& w, double dt) {
+namespace {
+
+// A turn of theta over the interval shortens the part across the rate by sin(theta/2) / (theta/2)
+// in the mean; `factor` maps that ratio to the scale wanted (mean to instant, or back).
+Eigen::Vector3d scale_across_rate(const Eigen::Vector3d& f, const Eigen::Vector3d& w, double dt,
+                                  double (*factor)(double half)) {
   const double theta = w.norm() * dt;
-  if (theta < 1e-3) return mean_f;
+  if (theta < 1e-3) return f;
   const Eigen::Vector3d u = w / w.norm();
-  const Eigen::Vector3d along = u * u.dot(mean_f);
-  const double half = 0.5 * theta;
-  return along + (mean_f - along) * (half / std::sin(half));
+  const Eigen::Vector3d along = u * u.dot(f);
+  return along + (f - along) * factor(0.5 * theta);
+}
+
+}  // namespace
+
+Eigen::Vector3d mean_to_instant(const Eigen::Vector3d& mean_f, const Eigen::Vector3d& w, double dt) {
+  return scale_across_rate(mean_f, w, dt, [](double half) { return half / std::sin(half); });
 }
 
 Eigen::Vector3d instant_to_mean(const Eigen::Vector3d& instant_f, const Eigen::Vector3d& w, double dt) {
-  const double theta = w.norm() * dt;
-  if (theta < 1e-3) return instant_f;
-  const Eigen::Vector3d u = w / w.norm();
-  const Eigen::Vector3d along = u * u.dot(instant_f);
-  const double half = 0.5 * theta;
-  return along + (instant_f - along) * (std::sin(half) / half);
+  return scale_across_rate(instant_f, w, dt, [](double half) { return std::sin(half) / half; });
 }
 
 Mechanization::Mechanization(const Eigen::Vector3d& w_ie_n, double g) : w_ie_(w_ie_n), g_n_(0.0, 0.0, g) {}
