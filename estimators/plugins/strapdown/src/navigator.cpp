@@ -111,20 +111,23 @@ void Navigator::navigate(Input in, const StillnessState& still, std::vector<Esti
   // Samples lost before this one: the step bridges them, and the epoch's noise says what they cost.
   const double step_dt = in.t - prev_->t, dt_nominal = checks_.dt_nominal();
   const bool gap = checks_.lost_samples(step_dt);
+  // The mechanization steps between the readings' instants, and what integrates a rate over the
+  // step takes theirs (a stamp may be behind the one before); everything else keeps the stamps.
+  const double prev_instant = clock_.instant();
+  const double instant = clock_.next(in.t, step_dt, dt_nominal, checks_.dt_jitter(), gap, checks_.ordered_by_seq());
+  const double instant_dt = instant - prev_instant;
   // An axial gyro at its range: the spin the magnetometers or the accelerometers see stands in for
   // its rate.
   std::optional<ClippedSpin::Spin> spin;
   if (filter_.drilling_tool() && ((in.clipped & kAxialGyroClipped) != 0 || in.gyro_bad) && !gap) {
-    spin = spin_.through(in, *prev_, step_dt, filter_.mechanization().tool_to_nav(), filter_.gravity());
+    spin = spin_.through(in, *prev_, instant_dt, filter_.mechanization().tool_to_nav(), filter_.gravity());
     if (spin) in.w.z() = spin->rate;
   } else {
     spin_.read();
   }
   if (gap) rows_.note_gap(in.t);
-  // The mechanization steps between the readings' instants; everything else keeps their stamps.
-  const double prev_instant = clock_.instant();
   Input at = in, from = *prev_;
-  at.t = clock_.next(in.t, step_dt, dt_nominal, checks_.dt_jitter(), gap);
+  at.t = instant;
   from.t = prev_instant;
   std::optional<Input> from2 = prev2_;
   if (from2) from2->t = prev2_instant_;
@@ -146,7 +149,7 @@ void Navigator::navigate(Input in, const StillnessState& still, std::vector<Esti
   // At this reading's attitude: the filter's state is the last full update's, degrees behind a
   // turning tool.
   if (in.clipped != 0 || spin)
-    ranges_.integrate(in, step_dt, filter_.mechanization().tool_to_nav(), spin ? spin_.source_name() : nullptr);
+    ranges_.integrate(in, instant_dt, filter_.mechanization().tool_to_nav(), spin ? spin_.source_name() : nullptr);
   if (in.depth) {
     stops_.take_depth(in.t, *in.depth, prev_->depth.has_value(), filter_);
     unseen_.note_depth(in.t);
@@ -299,7 +302,7 @@ RowContext Navigator::row_context() const {
   c.range_warning = ranges_.row_warning();
   if (std::string temperature = temperature_.row_warning(); !temperature.empty())
     c.range_warning += (c.range_warning.empty() ? "" : "; ") + temperature;
-  c.measured_instant_sd_s = clock_.instant_sd(checks_.dt_nominal(), checks_.dt_jitter());
+  c.measured_instant_sd_s = clock_.instant_sd(checks_.dt_nominal(), checks_.dt_jitter(), checks_.ordered_by_seq());
   if (aligner_.use_mag() && aligner_.field().dip) {
     // Magnetic north lies at the declination in a true frame, at 0 in a magnetic one.
     const double dip = *aligner_.field().dip, d = config_.declination.value_or(0.0);

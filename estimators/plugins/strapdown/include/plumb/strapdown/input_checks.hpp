@@ -46,11 +46,15 @@ class InputChecks {
   bool lost_samples(double dt) const {
     return dt_nominal_ > 0 && dt > kDropoutFactor * dt_nominal_ && dt - dt_nominal_ > kJitterSigmas * dt_jitter_;
   }
+  // The stream's seq counts its samples: readings are in their seq's order even where their stamps
+  // are not.
+  bool ordered_by_seq() const { return seq_counts_; }
   // Only samples without gyros so far: rows say strapdown needs them.
   bool no_gyro_at_all() const { return saw_no_gyro_ && !saw_gyro_; }
 
  private:
   Eigen::Vector3d rate_at(double stamp) const;
+  bool behind_within_jitter(const Sample& s) const;
 
   NavigatorConfig config_;
   std::uint64_t* samples_counter_ = nullptr;
