@@ -48,6 +48,7 @@ std::vector<std::string> Navigator::take_notices() {
   for (std::string& n : faults_.take_notices()) notices.push_back(std::move(n));
   for (std::string& n : ranges_.take_notices()) notices.push_back(std::move(n));
   for (std::string& n : temperature_.take_notices()) notices.push_back(std::move(n));
+  for (std::string& n : stops_.take_notices()) notices.push_back(std::move(n));
   return notices;
 }
 
@@ -151,7 +152,7 @@ void Navigator::navigate(Input in, const StillnessState& still, std::vector<Esti
   if (in.clipped != 0 || spin)
     ranges_.integrate(in, instant_dt, filter_.mechanization().tool_to_nav(), spin ? spin_.source_name() : nullptr);
   if (in.depth) {
-    stops_.take_depth(in.t, *in.depth, prev_->depth.has_value(), filter_);
+    stops_.take_depth(in.t, *in.depth, prev_->depth.has_value(), filter_, still.still, watch_.depth_sd());
     unseen_.note_depth(in.t);
   }
   still_state_ = still;
@@ -199,6 +200,8 @@ void Navigator::bridge_gap(const Input& from, const Input& at, const Input& in, 
 void Navigator::before_alignment(const Input& in, std::vector<Estimate>& out) {
   if (in.depth) unseen_.note_depth(in.t);
   still_state_ = watch_.before_alignment(in, aligner_.field().total_uT);
+  if (in.depth)
+    stops_.take_depth(in.t, *in.depth, prev_ && prev_->depth.has_value(), filter_, still_state_.still, watch_.depth_sd());
   if (still_state_.started) count("still_periods");
   if (aligner_.take(in, still_state_)) align(in);
   prev_ = in;

@@ -38,6 +38,11 @@ void StopUpdates::reset(const NavigatorConfig& config) {
   have_depth0_ = false;
   last_depth_update_t_ = -1e300;
   latest_depth_.reset();
+  heave_.reset();
+  aligned_ = false;
+  heave_said_ = false;
+  heave_found_since_.reset();
+  notices_.clear();
   latest_depth_t_ = last_depth_row_t_ = 0;
   zupt_periods_ = 0;
   tally_stops_ = 0;
@@ -49,13 +54,26 @@ void StopUpdates::reset(const NavigatorConfig& config) {
   last_stop_attitude_.reset();
 }
 
-void StopUpdates::take_depth(double t, double depth, bool prev_had_depth, const FilterState& filter) {
+void StopUpdates::take_depth(double t, double depth, bool prev_had_depth, const FilterState& filter, bool still,
+                             double depth_sd) {
   // A new report: a value that changed, or the first row with depth after rows without (a rig
   // reports once a second; the logger holds the value or leaves the rows between empty).
-  if (!latest_depth_ || depth != *latest_depth_ || !prev_had_depth) latest_depth_t_ = t;
+  if (!latest_depth_ || depth != *latest_depth_ || !prev_had_depth) {
+    latest_depth_t_ = t;
+    heave_.report(t, depth, still, depth_sd);
+    // Said once the swell has been found for a minute: its period is settled by then.
+    if (!heave_.found()) heave_found_since_.reset();
+    else if (!heave_found_since_) heave_found_since_ = t;
+    if (heave_found_since_ && t - *heave_found_since_ >= kHeaveSettledS && !heave_said_) {
+      heave_said_ = true;
+      notices_.push_back(format("the depth reports carry a swell of about %.1f s (a floating rig's heave, found at "
+                                "t = %.0f s): taken out of the depth at stops",
+                                *heave_.period_s(), *heave_found_since_));
+    }
+  }
   latest_depth_ = depth;
   last_depth_row_t_ = t;
-  if (!have_depth0_) {
+  if (!have_depth0_ && aligned_) {
     // The first depth after alignment: the distance counts from the one at alignment, so this
     // reading is referred back by the distance travelled since then.
     depth0_ = depth - filter.mechanization().state().s;
@@ -101,8 +119,11 @@ void StopUpdates::at_alignment(FilterState& filter, const StillStats& stats, dou
   zaru_stats_.clear();
   mag_stats_.clear();
   zupt_periods_ = 1;
-  if (depth) {
-    depth0_ = *depth;
+  aligned_ = true;
+  // The reports of the alignment's stop, averaged (a floating rig's swell in one report would stay
+  // in every distance after it); the aligning reading's own where there were none before it.
+  if (depth || heave_.depth()) {
+    depth0_ = heave_.depth().value_or(depth.value_or(0.0));
     have_depth0_ = true;
   }
 }
@@ -142,13 +163,13 @@ void StopUpdates::at_epoch(FilterState& filter, const FilterState::Prediction& p
     tally_update(filter, counters);
     stop_started_t_ = std::numeric_limits<double>::infinity();  // once per stop
   }
-  depth_update(filter, t, dt_nominal, depth_sd, counters);
+  depth_update(filter, t, dt_nominal, depth_sd, still.still, counters);
   velocity_after_updates_ = filter.state().v;
 }
 
 bool StopUpdates::depth_reporting(double t) const { return latest_depth_ && t - last_depth_row_t_ <= kHeldDepthAgeS; }
 
-void StopUpdates::depth_update(FilterState& filter, double t, double dt_nominal, double depth_sd,
+void StopUpdates::depth_update(FilterState& filter, double t, double dt_nominal, double depth_sd, bool still,
                                Counters& counters) {
   // A report older than a held one (a feed that reports only at connections, or one that stopped)
   // says where the tool was, not where it is: it waits for the next.
@@ -162,7 +183,10 @@ void StopUpdates::depth_update(FilterState& filter, double t, double dt_nominal,
   const double held = std::min(last_depth_row_t_ - latest_depth_t_, kHeldDepthAgeS);
   const double speed = x.q.toRotationMatrix().col(2).dot(x.v);
   const double stale_m = speed * (t - last_depth_row_t_ + held);
-  filter.update(along_hole_distance(x, *latest_depth_ - depth0_, std::sqrt(depth_sd * depth_sd + stale_m * stale_m)));
+  // (A floating rig's swell taken out where one is found: heave_filter.hpp.)
+  const double swell = still ? heave_.swell_at(latest_depth_t_) : 0.0;
+  const double var = still ? heave_.residual_var(depth_sd) : depth_sd * depth_sd;
+  filter.update(along_hole_distance(x, *latest_depth_ - swell - depth0_, std::sqrt(var + stale_m * stale_m)));
   count(counters, "depth_updates");
   last_depth_update_t_ = t;
 }

@@ -10,11 +10,14 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Core>
 
 #include "plumb/strapdown/alignment.hpp"
 #include "plumb/strapdown/filter_state.hpp"
+#include "plumb/strapdown/heave_filter.hpp"
 #include "plumb/strapdown/navigator_common.hpp"
 #include "plumb/strapdown/navigator_config.hpp"
 #include "plumb/strapdown/stillness.hpp"
@@ -28,8 +31,14 @@ double mean_force_sd(const StillStats& stats, double accel_vrw, double dt);
 class StopUpdates {
  public:
   void reset(const NavigatorConfig& config);
-  // An aligned reading's depth report (prev_had_depth: whether the reading before carried one).
-  void take_depth(double t, double depth, bool prev_had_depth, const FilterState& filter);
+  // An aligned reading's depth report (prev_had_depth: whether the reading before carried one;
+  // still: the stillness decision the filter takes for it; depth_sd: the depth's noise, stated or
+  // measured).
+  void take_depth(double t, double depth, bool prev_had_depth, const FilterState& filter, bool still, double depth_sd);
+  // A floating rig's swell found on the depth reports (none: the period is empty).
+  const HeaveFilter& heave() const { return heave_; }
+  // What the log should say once: a swell found on the depth reports.
+  std::vector<std::string> take_notices() { return std::exchange(notices_, {}); }
   // An aligned reading's stillness: a stop that starts restarts the stop's means.
   void follow(const InputReading& in, const StillnessState& still, Counters& counters);
   // At alignment: the alignment's own means as the filter's first measurements (they shape P:
@@ -62,7 +71,7 @@ class StopUpdates {
   void turned_since_last_stop(FilterState& filter) const;
   // A depth row came within the age of a held report: the feed measures the tool as it goes.
   bool depth_reporting(double t) const;
-  void depth_update(FilterState& filter, double t, double dt_nominal, double depth_sd, Counters& counters);
+  void depth_update(FilterState& filter, double t, double dt_nominal, double depth_sd, bool still, Counters& counters);
   void lateral_velocity_update(FilterState& filter, Counters& counters);
   void axial_acceleration_update(FilterState& filter, const FilterState::Prediction& prediction, double t,
                                  Counters& counters);
@@ -73,8 +82,14 @@ class StopUpdates {
   std::uint32_t zupt_periods_ = 0;
   double depth0_ = 0;
   bool have_depth0_ = false;
+  bool aligned_ = false;  // reports before it feed the swell's models only
   double last_depth_update_t_ = -1e300;
   std::optional<double> latest_depth_;
+  HeaveFilter heave_;
+  bool heave_said_ = false;
+  std::optional<double> heave_found_since_;
+  static constexpr double kHeaveSettledS = 60;
+  std::vector<std::string> notices_;
   std::optional<Eigen::Quaterniond> last_stop_attitude_;  // at the end of the last stop
   double latest_depth_t_ = 0;    // when the latest depth report came (its value first seen)
   double last_depth_row_t_ = 0;  // the last row that carried a depth
