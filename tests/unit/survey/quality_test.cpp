@@ -78,7 +78,12 @@ TEST(AzimuthReference, TrueAndGrid) {
   EXPECT_NEAR(convert_magnetic_azimuth(3, AzimuthReference::True, c), 355.5, 1e-12);
   EXPECT_NEAR(convert_magnetic_azimuth(3, AzimuthReference::Grid, c), 354.25, 1e-12);
   EXPECT_NEAR(convert_magnetic_azimuth(-3, AzimuthReference::Magnetic, c), 357, 1e-12);
+  // Back to true north from each reference: the grid azimuth 354.25 plus 1.25 is the true 355.5.
+  EXPECT_EQ(true_azimuth_offset_deg(AzimuthReference::True, c), 0);
+  EXPECT_EQ(true_azimuth_offset_deg(AzimuthReference::Grid, c), 1.25);
+  EXPECT_EQ(true_azimuth_offset_deg(AzimuthReference::Magnetic, c), -7.5);
   NorthCorrections none;
+  EXPECT_EQ(true_azimuth_offset_deg(AzimuthReference::Magnetic, none), 0);  // magnetic north taken for true
   EXPECT_THROW(convert_magnetic_azimuth(3, AzimuthReference::True, none), std::invalid_argument);
   none.declination_known = true;
   EXPECT_THROW(convert_magnetic_azimuth(3, AzimuthReference::Grid, none), std::invalid_argument);

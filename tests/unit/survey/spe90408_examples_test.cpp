@@ -1,12 +1,14 @@
 // The ISCWSA gyro model against the worked examples of its paper (SPE 90408, Torkildsen et al.):
 // the Example Models of Appendix D (tests/data/spe90408/model_N.tool.csv) on ISCWSA test well #1
-// (the well of the MWD workbooks, tests/data/iscwsa) at latitude 60 deg N, against the position
-// covariances of Appendix E, Table E1, with the paper's own acceptance: within 1 %, or 2 m^2 where
-// the published value is below 200 (it rounds to whole m^2).
+// (the well of the MWD workbooks, tests/data/iscwsa) at latitude 60 deg N, in the UTM grid of
+// Appendix E, against the position covariances of its Table E1. The paper's own acceptance is 1 %,
+// or 2 m^2 where the published value is below 200 (it rounds to whole m^2); what plumb reaches is
+// held here, tighter.
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,12 @@ namespace {
 
 const std::string kExamples = PLUMB_SPE90408_DATA;
 const std::string kWell = PLUMB_ISCWSA_DATA "/mwdrev5-iscwsa-1.wellpath.csv";
+// Appendix E gives well #1 in a UTM grid, its azimuths grid azimuths, while the gyro reads true
+// north: true = grid - 0.866 deg, the convergence 1 deg west of a zone's central meridian at
+// 60 deg N (as at 2 deg E in UTM zone 31); inferred from Table E1, not from a published location
+// (README.md).
+const double kWell1Convergence =
+    std::atan(std::tan(-std::numbers::pi / 180) * std::sin(std::numbers::pi / 3)) * 180 / std::numbers::pi;
 
 std::vector<Station> well1() {
   std::vector<StationGeometry> g;
@@ -34,14 +42,22 @@ std::vector<Station> well1() {
   return s;
 }
 
-bool within_acceptance(double ours, double published) {
-  return std::abs(published) < 200 ? std::abs(ours - published) <= 2 : std::abs(ours - published) <= 0.01 * std::abs(published);
+// Beyond the table's rounding to whole m^2, values of 200 m^2 and more within 0.1 %; Models #2 and
+// #4, which both run a z gyro, within 0.25 % (not explained: #2 at 2100 m NE -374.7 against -376, #4
+// NN 0.22 % high from 5100 m on). Values below 200 m^2 within 1.25 m^2 (1200 m EE 17.1 against 18,
+// the vertical section's misalignments; Model #1 at 2100 m EE 142.8 against 144).
+bool within_what_plumb_reaches(int model, double ours, double published) {
+  const double gap = std::abs(ours - published);
+  if (std::abs(published) < 200) return gap <= 1.25;
+  const double relative = model == 2 || model == 4 ? 0.0025 : 0.001;
+  return gap <= 0.5 + relative * std::abs(published);
 }
 
 TEST(Spe90408, ExampleModelsOnTestWell1MatchAppendixE) {
   const std::vector<Station> stations = well1();
   Field field;
   field.latitude_deg = 60;
+  field.true_azimuth_offset_deg = kWell1Convergence;
   std::map<int, Result> results;
   int checked = 0;
   for (const auto& row : test::data_rows(kExamples + "/well1.expected.csv")) {
@@ -62,7 +78,7 @@ TEST(Spe90408, ExampleModelsOnTestWell1MatchAppendixE) {
     for (std::size_t i = 0; i < 6; ++i) {
       const double published = std::stod(row[2 + i]);
       std::printf("  %s %.1f (%g)", names[i], ours[i], published);
-      EXPECT_TRUE(within_acceptance(ours[i], published))
+      EXPECT_TRUE(within_what_plumb_reaches(model, ours[i], published))
           << "model " << model << " MD " << md << " " << names[i] << ": " << ours[i] << " against " << published;
       ++checked;
     }

@@ -31,4 +31,13 @@ double convert_magnetic_azimuth(double magnetic_deg, AzimuthReference to, const 
   return wrap_deg_360(true_deg - c.convergence_deg);
 }
 
+double true_azimuth_offset_deg(AzimuthReference from, const NorthCorrections& c) {
+  switch (from) {
+    case AzimuthReference::True: return 0;
+    case AzimuthReference::Grid: return c.convergence_deg;
+    case AzimuthReference::Magnetic: return c.declination_known ? c.declination_deg : 0;
+  }
+  return 0;
+}
+
 }  // namespace plumb::survey

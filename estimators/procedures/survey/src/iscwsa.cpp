@@ -171,11 +171,13 @@ TermEffect sensor_term(const std::vector<Rad>& s, const Derivatives& d, const Te
 }
 
 // A gyro term: its change of (MD, I, A) at each station through the same derivatives as the
-// sensor terms, and the stations that share one draw of it.
+// sensor terms, and the stations that share one draw of it. Its weights take the true azimuth; the
+// derivatives the survey's frame.
 TermEffect gyro_effect(const std::vector<Rad>& s, const Derivatives& d, const Term& t, const ToolCode& tool,
                        const Field& field) {
   std::vector<detail::GyroStation> g;
-  for (const Rad& r : s) g.push_back({r.md, r.inc, r.azi, r.t});
+  const double to_true = field.true_azimuth_offset_deg * kRad;
+  for (const Rad& r : s) g.push_back({r.md, r.inc, r.azi + to_true, r.t});
   detail::GyroEffect ge = detail::gyro_term(g, t, si_magnitude(t), tool.gyro, field);
   const std::size_t n = s.size();
   TermEffect e{std::vector<Vector3d>(n, Vector3d::Zero()), std::vector<Vector3d>(n, Vector3d::Zero()),

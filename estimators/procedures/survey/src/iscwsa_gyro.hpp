@@ -13,7 +13,8 @@
 
 namespace plumb::survey::iscwsa::detail {
 
-// One station as the gyro terms see it: radians; t_s the station's time (NaN when not known).
+// One station as the gyro terms see it: radians, azi the true azimuth; t_s the station's time (NaN when
+// not known).
 struct GyroStation {
   double md = 0, inc = 0, azi = 0, t_s = 0;
 };

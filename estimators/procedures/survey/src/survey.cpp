@@ -80,6 +80,7 @@ void Survey::add_model_uncertainty(SurveyRow& row) {
     field.total_b_nT = options_.errors.total_b_uT * 1000.0;
     field.dip_deg = options_.errors.dip_deg;
     field.latitude_deg = options_.latitude_deg;
+    field.true_azimuth_offset_deg = true_azimuth_offset_deg(options_.reference, options_.north);
     field.first_station_surveyed = options_.first_station_surveyed;
     const iscwsa::Result model = iscwsa::propagate(stations, *options_.tool_code, field);
     row.uncertainty.covariance += model.total.back();

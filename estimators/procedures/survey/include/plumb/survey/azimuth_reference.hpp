@@ -28,4 +28,10 @@ struct NorthCorrections {
 // was not given (a true or grid survey without a declination is an error, never a silent 0).
 double convert_magnetic_azimuth(double magnetic_deg, AzimuthReference to, const NorthCorrections& c);
 
+// What turns an azimuth in `from` into a true azimuth (true = azimuth + this): 0 for true, the
+// convergence for grid, the declination for magnetic, or 0 where that declination is not known
+// (magnetic north taken for true). A gyro's errors depend on the true azimuth, whatever the
+// survey's reference.
+double true_azimuth_offset_deg(AzimuthReference from, const NorthCorrections& c);
+
 }  // namespace plumb::survey

@@ -79,6 +79,10 @@ struct Field {
   double dip_deg = 60;
   double vertical_inc_limit_deg = 1e-4;  // below it a station is "vertical" for the model
   double latitude_deg = std::numeric_limits<double>::quiet_NaN();  // a gyrocompass's terms need it
+  // Added to a station's azimuth_deg, its true azimuth: the gyro terms weigh the true azimuth (a
+  // gyrocompass reads the earth's rate, which points to true north). A grid survey's convergence
+  // (true = grid + convergence), a magnetic one's declination; 0 for a true survey.
+  double true_azimuth_offset_deg = 0;
   // Whether the first station is a survey of its own (its errors tilt the half course below it) or
   // a tie-in point whose direction is given (no error of its own). ISCWSA's error-model workbooks
   // tie in; the ISCWSA clearance set (tests/data/iscwsa_clearance) surveys from MD 0 and from a
