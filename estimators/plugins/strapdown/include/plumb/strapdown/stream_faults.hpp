@@ -75,7 +75,6 @@ class StreamFaults {
   bool cross_rate_started_ = false;
   double spin_mean_ = 0, spin_var_ = 0;  // the rate about the axis over the last seconds (rad/s, its square)
   double pending_att_ = 0, pending_vel_ = 0;  // variance per axis to add at the next epoch
-  Eigen::Matrix<double, 6, 1> pending_turn_ = Eigen::Matrix<double, 6, 1>::Zero();  // across the axis
   double pending_axial_ = 0;  // about the axis, rad
   Eigen::Vector3d pending_axis_ = Eigen::Vector3d::Zero();  // the tool's axis (navigation frame) at the last gap
   Eigen::Matrix3d pending_force_ = Eigen::Matrix3d::Zero();
