@@ -35,7 +35,7 @@ pids+=($!)
 for log in live fallback; do
   wait_for "$work/$log.err" "attitude writer matched" 60 || { echo "$log plumb-survey never matched the estimator:"; cat "$work/$log.err" "$work/estimator.out"; exit 1; }
 done
-"$bin/plumb-sim" --scenario drilling-survey --transport "$sim_t" --rate x10 --reliable --wait-subscribers 20 \
+"$bin/plumb-sim" --scenario drilling-survey --transport "$sim_t" --rate x20 --reliable --wait-subscribers 20 \
   > "$work/sim.out" 2>&1 &
 sim=$!
 pids+=($sim)
