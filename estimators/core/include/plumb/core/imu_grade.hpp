@@ -1,8 +1,10 @@
-// The typical figures of the three inertial sensor classes a tool is built from: the navigator's
-// `imu_grade` presets (estimators/plugins/strapdown parameters) and the survey's error model of a
-// navigator's stations (plumb/survey/navigator_tool_code.hpp) read the same table, so a survey is
-// held to the very figures its navigator assumed. It lives in the vocabulary because both need it
-// and neither may depend on the other: the survey library is plain math without the navigator.
+// The typical figures of the three inertial sensor classes a tool is built from: the simulator's
+// grades (sim/src/imu_grade.cpp), the navigator's `imu_grade` presets (estimators/plugins/strapdown
+// parameters) and the survey's error model of a navigator's stations
+// (plumb/survey/navigator_tool_code.hpp) read the same table, so a survey is held to the very
+// figures its navigator assumed, of the sensors the simulator made. It lives in the vocabulary
+// because all three need it and none may depend on another: the survey library is plain math
+// without the navigator, and the simulator knows the vocabulary only.
 #pragma once
 
 #include <string_view>
@@ -21,7 +23,7 @@ struct ImuGradeFigures {
   double gyro_temp_dph_c, accel_temp_mg_c;   // typical bias temperature coefficients
 };
 
-// The simulator's classes (sim/include/plumb/sim/imu_model.hpp) with the navigator's ranges.
+// The classes as sim/include/plumb/sim/imu_model.hpp describes them.
 inline constexpr ImuGradeFigures kImuGrades[] = {
     {"navigation", 0.01, 0.002, 0.025, 0.005, 5, 0.02, 0.1, 20, 0.02, 500, 25, 0.002, 0.002},
     {"tactical", 1.0, 0.05, 0.3, 0.03, 100, 0.1, 1, 100, 0.1, 1000, 40, 0.05, 0.01},
