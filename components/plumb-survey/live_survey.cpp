@@ -13,6 +13,7 @@
 #include "attitude_continuity.hpp"
 #include "clearance_watch.hpp"
 #include "depth_clock.hpp"
+#include "navigator_parameters.hpp"
 #include "station_message.hpp"
 #include "survey_store.hpp"
 
@@ -70,9 +71,13 @@ std::optional<survey::StationListModel> reference_model(const LiveOptions& o, co
 // One live survey: its topics, the stations it has (kept in the file), what it has heard.
 class LiveSurvey {
  public:
-  explicit LiveSurvey(const LiveOptions& o)
+  LiveSurvey(const LiveOptions& o, const NavigatorAnswer& navigator)
       : o_(o),
-        result_(components::make_survey_options(o.survey, o.estimator)),
+        result_(components::make_survey_options(o.survey, o.estimator,
+                                                navigator.parameters ? &*navigator.parameters : nullptr)),
+        error_model_fallback_(!navigator.status.empty()),
+        error_model_said_(navigator.said),
+        error_model_status_(navigator.status),
         store_(o.file, result_, note),
         conn_(components::connect(o.transport, kProgram)),
         survey_topic_(transport::topic_names::survey(topic_safe(o.tool_id))),
@@ -87,6 +92,7 @@ class LiveSurvey {
         detector_(components::make_detector_options(o.survey), [this](survey::Station st) { on_station(st); }, note),
         clearance_(o.clearance, offset_model(o, result_.options()), reference_model(o, result_.options()),
                    result_.options().reference, note) {
+    if (error_model_fallback_) last_error_ = error_model_status_;
     if (clearance_.active())
       clearance_writer_.emplace(transport::make_writer<topics::Clearance>(
           *conn_.participant, transport::topic_names::kClearance,
@@ -102,6 +108,10 @@ class LiveSurvey {
       sensors_.emplace(transport::make_reader<topics::SensorBatch>(*conn_.participant, o_.sensor_topic,
                                                                    transport::Qos::sensor_stream()));
     note(clock_.describe() + (clock_.given() ? "" : "; matching the stops on " + o_.sensor_topic + " with the depth's"));
+    if (!error_model_said_.empty()) note(error_model_said_);
+    note("error model " + (result_.options().tool_code ? result_.options().tool_code->name : std::string("plumb")) +
+         (result_.options().station_sigma_beyond_model ? ": each station's own sigma counts by its excess over the model's"
+                                                       : ""));
     clock_said_ = clock_.given();  // said once above; an estimate is said when it comes
     t0_ = Clock::now();
     last_attitude_ = Clock::now();
@@ -188,9 +198,11 @@ class LiveSurvey {
     for (const auto& pair : clearance_.at_station(row)) clearance_writer_->write(to_topic(pair, row, clearance_.levels()));
   }
 
-  // Degraded: stations refused, or the newest station at the clearance alarm.
+  // Degraded: stations refused, the newest station at the clearance alarm, or the navigator's error
+  // model replaced by plumb's own terms (its host did not answer).
   std::string state() const {
-    return refused_ > 0 || clearance_.level() == survey::ClearanceLevel::Alarm ? "degraded" : "running";
+    return refused_ > 0 || error_model_fallback_ || clearance_.level() == survey::ClearanceLevel::Alarm ? "degraded"
+                                                                                                        : "running";
   }
   // The clearance while not clear comes first: it is what the driller must see.
   std::string status_message() const {
@@ -214,7 +226,8 @@ class LiveSurvey {
                                    {"other_tool_messages", other_tool_},
                                    {"attitude_gaps", continuity_.gaps()},
                                    {"attitude_windows_missing", continuity_.windows_missing()},
-                                   {"readers", writer_.matched_readers()}};
+                                   {"readers", writer_.matched_readers()},
+                                   {"error_model_fallback", error_model_fallback_ ? 1u : 0u}};
   }
 
   components::CounterList all_counters() {
@@ -311,6 +324,8 @@ class LiveSurvey {
 
   const LiveOptions& o_;
   survey::Survey result_;
+  bool error_model_fallback_;    // auto on the navigator's stations without its parameters
+  std::string error_model_said_, error_model_status_;
   SurveyStore store_;
   components::Connection conn_;
   std::string survey_topic_, attitude_topic_;
@@ -348,7 +363,15 @@ int run_live_survey(const LiveOptions& o) {
   components::check_clearance_options(o.clearance);
   if (!o.clearance.sidetracks.empty())
     ClearanceWatch::check_sidetracks(o.clearance, components::make_survey_options(o.survey, o.estimator).tool_code.has_value());
-  LiveSurvey survey(o);
+  // The navigator's own gyro model needs its parameters: asked of its host before the survey
+  // starts (the file's stations are resumed through the same model).
+  NavigatorAnswer navigator;
+  if (o.survey.error_model == "auto" && o.estimator == components::kNavigatorPlugin) {
+    components::install_stop_handler();
+    navigator = ask_navigator_parameters(o.transport, o.estimator_host.empty() ? components::host_name() : o.estimator_host,
+                                         o.estimator, o.estimator_wait_s);
+  }
+  LiveSurvey survey(o, navigator);
   return survey.run();
 }
 

@@ -16,6 +16,11 @@ struct LiveOptions {
   components::SurveyCliOptions survey;
   std::string estimator = "compensated";  // reads plumb/attitude/<estimator>: fits a turning or standing tool
   std::string attitude_topic;        // overrides the estimator's topic
+  // The host that runs the estimator (its plumb-estimator --name; empty: this computer's host name),
+  // asked for the navigator's parameters when `--error-model auto` surveys the navigator's stations,
+  // waiting this long for its answer.
+  std::string estimator_host;
+  double estimator_wait_s = 10;
   std::string tool_id;               // the tool surveyed: its attitude and depth; names plumb/survey/<tool>
   std::string file;                  // the survey file (required)
   int count = 0;                     // exit once the survey holds this many stations (0: run until stopped)

@@ -17,6 +17,13 @@ int main(int argc, char** argv) {
   app.add_option("-p,--plugin,--estimator", o.estimator, "estimator whose attitude to read (plumb/attitude/<plugin>)")
       ->capture_default_str();
   app.add_option("--attitude-topic", o.attitude_topic, "attitude topic to read instead of plumb/attitude/<plugin>");
+  app.add_option("--estimator-host", o.estimator_host,
+                 "the estimator host running the plugin (its plumb-estimator --name; default this computer's host "
+                 "name): --error-model auto on the strapdown navigator asks it for the navigator's parameters");
+  app.add_option("--estimator-wait", o.estimator_wait_s,
+                 "seconds to wait at start for the estimator host's answer (then plumb's own terms, said)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   components::add_survey_options(app, o.survey);
   app.add_option("--count", o.count, "exit once the survey holds this many stations (0: run until stopped)");
   app.add_option("--timeout", o.timeout_s, "exit with an error if --count is not reached within this many seconds");

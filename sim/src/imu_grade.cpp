@@ -1,11 +1,13 @@
-// The named IMU grades (values tabled in imu_model.hpp), their conversion to SI units and their
-// one-line description.
+// The named IMU grades (values tabled in imu_model.hpp, read from the vocabulary's table that the
+// navigator's imu_grade presets and the survey's model of its stations read too:
+// plumb/core/imu_grade.hpp), their conversion to SI units and their one-line description.
 #include <cmath>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
 
 #include "plumb/core/attitude.hpp"
+#include "plumb/core/imu_grade.hpp"
 #include "plumb/sim/imu_model.hpp"
 
 namespace plumb::sim {
@@ -28,6 +30,12 @@ ImuGrade make(const char* name, double gyro_bias, double arw, double accel_bias,
   return g;
 }
 
+ImuGrade from_table(const char* name) {
+  const ImuGradeFigures& f = *find_imu_grade(name);
+  return make(f.name, f.gyro_bias_dph, f.gyro_arw_deg_rt_h, f.accel_bias_mg, f.accel_vrw_mps_rt_h, f.gyro_range_dps,
+              f.gyro_temp_dph_c, f.accel_temp_mg_c);
+}
+
 }  // namespace
 
 // The temperature coefficients are the residuals a datasheet states after the part's own
@@ -35,11 +43,11 @@ ImuGrade make(const char* name, double gyro_bias, double arw, double accel_bias,
 // 0.05 deg/h/degC for a survey tool's fibre-optic gyro and 10 ug/degC for a quartz accelerometer;
 // 0.2 deg/h/degC and 0.05 mg/degC for an industrial MEMS unit (the order of ADIS1649x-class sheets).
 // Ring-laser / high-end fibre-optic gyros and servo accelerometers: enough to gyrocompass.
-ImuGrade ImuGrade::navigation() { return make("navigation", 0.01, 0.002, 0.025, 0.005, 500, 0.002, 0.002); }
+ImuGrade ImuGrade::navigation() { return from_table("navigation"); }
 // Fibre-optic gyros and quartz accelerometers of gyro survey and MWD tools.
-ImuGrade ImuGrade::tactical() { return make("tactical", 1.0, 0.05, 0.3, 0.03, 1000, 0.05, 0.01); }
+ImuGrade ImuGrade::tactical() { return from_table("tactical"); }
 // Industrial MEMS (the source's class of sensor).
-ImuGrade ImuGrade::mems() { return make("mems", 10.0, 0.3, 2.0, 0.06, 2000, 0.2, 0.05); }
+ImuGrade ImuGrade::mems() { return from_table("mems"); }
 ImuGrade ImuGrade::perfect() { return make("perfect", 0, 0, 0, 0, 0); }
 
 ImuGrade ImuGrade::named(const std::string& name) {

@@ -7,6 +7,7 @@
 
 #include "plumb/core/number.hpp"
 #include "plumb/csv/files.hpp"
+#include "plumb/survey/navigator_tool_code.hpp"
 #include "plumb/survey/tool_code_file.hpp"
 
 namespace plumb::components {
@@ -56,8 +57,10 @@ void add_survey_options(CLI::App& app, SurveyCliOptions& o) {
                  "MWD+IFR1), the ISCWSA gyro model (GYRO-NS, GYRO-NS-CT, GYRO-MWD: OWSG revision 5.1; GYRO:tactical, "
                  "GYRO:mems: plumb's strapdown grades, continuous from a known azimuth), a tool code file "
                  "(code,weight_function,magnitude,unit,propagation), plumb (plumb's own "
-                 "terms, --axial-bias-sd and the like), or auto (MWD for a magnetic survey, plumb for the strapdown "
-                 "navigator's)")
+                 "terms, --axial-bias-sd and the like), or auto (MWD for a magnetic survey; for the strapdown "
+                 "navigator's, the gyro model of the navigator's own figures and alignment, GYRO:navigator, from its "
+                 "parameters: plumb survey's --param, plumb-survey asks its estimator host; plumb's own terms when "
+                 "they are not known, said)")
       ->capture_default_str();
   app.add_option("--still-tolerance", o.still_tolerance_m, "depth change within a window that still counts as a stop, "
                                                           "m, at least (6.5 depth sigmas when the depth is noisier)")
@@ -79,9 +82,7 @@ void add_survey_options(CLI::App& app, SurveyCliOptions& o) {
 
 namespace {
 
-std::optional<survey::iscwsa::ToolCode> tool_code(const std::string& name, const std::string& estimator) {
-  if (name == "plumb" || (name == "auto" && estimator == "strapdown")) return std::nullopt;
-  if (name == "auto") return survey::iscwsa::builtin_tool_code("MWD");
+std::optional<survey::iscwsa::ToolCode> named_tool_code(const std::string& name) {
   const auto builtin = survey::iscwsa::builtin_tool_codes();
   if (std::find(builtin.begin(), builtin.end(), name) != builtin.end()) return survey::iscwsa::builtin_tool_code(name);
   std::ifstream in(name);
@@ -95,9 +96,9 @@ std::optional<survey::iscwsa::ToolCode> tool_code(const std::string& name, const
 
 }  // namespace
 
-survey::SurveyOptions make_survey_options(const SurveyCliOptions& o, const std::string& estimator) {
+survey::SurveyOptions make_survey_options(const SurveyCliOptions& o, const std::string& estimator,
+                                          const survey::iscwsa::NavigatorParameters* navigator) {
   survey::SurveyOptions s;
-  s.tool_code = tool_code(o.error_model, estimator);
   s.reference = *survey::parse_azimuth_reference(o.reference);
   if (!o.reference_file.empty()) {
     std::ifstream in(o.reference_file);
@@ -118,6 +119,25 @@ survey::SurveyOptions make_survey_options(const SurveyCliOptions& o, const std::
     s.north.convergence_known = true;
   }
   s.north.declination_sd_deg = o.declination_sd_deg;
+  // The error model: the navigator's own gyro model for its stations under auto (from its
+  // parameters; without them plumb's own terms, the caller saying why), ISCWSA's MWD model for
+  // every other estimator's.
+  const bool navigator_stations = estimator == kNavigatorPlugin;
+  if (o.error_model == "auto" && navigator_stations) {
+    if (navigator) {
+      const survey::iscwsa::NavigatorModel m =
+          survey::iscwsa::navigator_tool_code(*navigator, s.field.total_b_uT.value_or(50), s.field.dip_deg.value_or(60));
+      s.tool_code = m.tool;
+      if (!o.latitude_deg) s.latitude_deg = m.latitude_deg;  // the latitude the navigator gyrocompassed at
+    }
+  } else if (o.error_model == "auto") {
+    s.tool_code = survey::iscwsa::builtin_tool_code("MWD");
+  } else if (o.error_model != "plumb") {
+    s.tool_code = named_tool_code(o.error_model);
+  }
+  // A navigator's sigma holds its drift since alignment: against a gyro model it counts only by
+  // what it exceeds the model's (survey::SurveyOptions::station_sigma_beyond_model).
+  s.station_sigma_beyond_model = navigator_stations && s.tool_code && survey::iscwsa::has_gyro_terms(*s.tool_code);
   if (s.reference != survey::AzimuthReference::Magnetic && !s.north.declination_known)
     throw std::invalid_argument("--reference " + o.reference + " needs --declination (or declination_deg in --reference-file)");
   if (s.reference == survey::AzimuthReference::Grid && !s.north.convergence_known)

@@ -5,13 +5,34 @@
 #include <iostream>
 #include <memory>
 
-#include "component_client.hpp"
 #include "plumb/components/cli.hpp"
+#include "plumb/components/component_client.hpp"
 #include "plumb/transport/topic_names.hpp"
 #include "verbs.hpp"
 
 namespace plumb::cli {
 namespace {
+
+using components::ComponentClient;
+
+// Runs a request against HOST and prints the refusal (one line on stderr, exit 1) or hands the
+// accepted reply to `print` (exit 0). A host that did not answer: exit 1 with no_answer's line.
+int run_component_request(const components::TransportOptions& transport, double wait_s, topics::ComponentRequest request,
+                          void (*print)(const topics::ComponentReply&)) {
+  components::install_stop_handler();
+  ComponentClient client(transport, wait_s);
+  const std::optional<topics::ComponentReply> reply = client.ask(request);
+  if (!reply) {
+    components::print_error("plumb", client.no_answer(request.host));
+    return 1;
+  }
+  if (reply->result != topics::COMPONENT_DONE) {
+    components::print_error("plumb", reply->message);
+    return 1;
+  }
+  print(*reply);
+  return 0;
+}
 
 struct ComponentOptions {
   components::TransportOptions transport;

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "plumb/components/cli.hpp"
@@ -43,9 +44,20 @@ struct Collector {
   }
 };
 
-void from_sensor_csv(const SurveyCommandOptions& o, survey::StationDetector& detector) {
-  estimator::Runner runner = estimator::load_runner({o.estimator});
-  runner.configure(o.params, o.window_s);
+// The navigator's parameters as its host's `plumb param dump` gives them: every one it declares,
+// with the value given (--param) or its default.
+survey::iscwsa::NavigatorParameters parameters_in_use(const estimator::Runner& runner) {
+  survey::iscwsa::NavigatorParameters in_use;
+  const estimator::Runner::Slot& slot = runner.slots().front();
+  const std::vector<estimator::Info> infos = runner.infos();
+  for (const auto& spec : infos.front().parameters) {
+    const auto given = slot.parameters.find(spec.name);
+    in_use[spec.name] = given != slot.parameters.end() ? given->second : spec.default_value;
+  }
+  return in_use;
+}
+
+void from_sensor_csv(const SurveyCommandOptions& o, estimator::Runner& runner, survey::StationDetector& detector) {
   std::ifstream in(o.sensor);
   if (!in) throw std::runtime_error("cannot open input '" + o.sensor + "'");
   csv::SensorReader reader(in, o.sensor);
@@ -86,7 +98,15 @@ int run_survey(const SurveyCommandOptions& o) {
   if (inputs != 1) throw std::invalid_argument("give exactly one of --input (sensor CSV), --attitude, --stations");
   if (!o.attitude.empty() && o.depth.empty() && !o.survey.pipe_length_m && o.survey.tally_file.empty())
     throw std::invalid_argument("--attitude needs --depth (a depth log), or --pipe-length or --tally (a pipe tally)");
-  survey::Survey result(components::make_survey_options(o.survey, o.sensor.empty() ? "" : o.estimator));
+  std::optional<estimator::Runner> runner;
+  std::optional<survey::iscwsa::NavigatorParameters> navigator;
+  if (!o.sensor.empty()) {
+    runner = estimator::load_runner({o.estimator});
+    runner->configure(o.params, o.window_s);
+    if (o.estimator == components::kNavigatorPlugin) navigator = parameters_in_use(*runner);
+  }
+  survey::Survey result(components::make_survey_options(o.survey, o.sensor.empty() ? "" : o.estimator,
+                                                        navigator ? &*navigator : nullptr));
   const Collector collect{result, o.survey.depth_sd_m};
   std::vector<std::string> notes;
   survey::StationDetector detector(components::make_detector_options(o.survey), collect,
@@ -102,7 +122,7 @@ int run_survey(const SurveyCommandOptions& o) {
       for (const auto& e : estimates) detector.add_attitude(e, "");
       detector.flush();
     } else {
-      from_sensor_csv(o, detector);
+      from_sensor_csv(o, *runner, detector);
       detector.flush();
     }
   } catch (const survey::StationError& e) {

@@ -59,7 +59,7 @@ PY
 # The strapdown navigator's rows (1 s, at the zero-velocity updates when the string stands) serve too.
 "$bin/plumb" survey --input "$work/run/sensor.csv" --estimator strapdown --param latitude_deg=35 --param gravity=9.80665 \
   "${ref[@]}" -o "$work/strapdown.csv" 2> /dev/null
-python3 - "$work/survey.csv" "$work/strapdown.csv" "$work/run/truth.csv" <<'PY' && pass "strapdown navigator: the same stops, QC passed, inclination within 4 sigma of the truth" || fail "strapdown survey"
+python3 - "$work/survey.csv" "$work/strapdown.csv" "$work/run/truth.csv" <<'PY' && pass "strapdown navigator: the same stops, QC passed, inclination within 4 sigma of the truth, the gyro model of its own figures" || fail "strapdown survey"
 import bisect, csv, sys
 a, b = ([r for r in csv.DictReader(l for l in open(p) if not l.startswith('#'))] for p in sys.argv[1:3])
 truth = list(csv.DictReader(open(sys.argv[3])))
@@ -71,6 +71,10 @@ for x, y in zip(a, b):
     # The navigator estimates the accelerometer biases the static formula cannot: within 4 of its sigmas.
     err = abs(float(y["inclination_deg"]) - float(t["inclination_deg"]))
     assert err < 4 * float(y["inclination_sd_deg"]), (y["t"], err, y["inclination_sd_deg"])
+    # --error-model auto: the ISCWSA gyro model of the navigator's grade (tactical by default),
+    # initialised by its magnetometer, never narrower than the navigator's own sigma.
+    assert y["error_model"] == "GYRO:navigator (tactical; magnetic az 0.689 deg)", y["error_model"]
+    assert float(y["azimuth_total_sd_deg"]) >= 0.999 * float(y["azimuth_sd_deg"]), (y["azimuth_total_sd_deg"], y["azimuth_sd_deg"])
 PY
 # No depth at all: a pipe tally numbers the stops (valid, non-rotating windows); corrections per stop.
 printf 'joint_m,correction_m\n1.5,0\n1.5,0.01\n1.5,0\n1.5,0\n1.5,-0.02\n1.5,0\n1.5,0\n' > "$work/tally.csv"

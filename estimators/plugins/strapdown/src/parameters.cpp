@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "plumb/core/imu_grade.hpp"
 #include "plumb/estimator/parameter_reader.hpp"
 
 namespace plumb::strapdown {
@@ -19,17 +20,6 @@ constexpr double kDegToRad = std::numbers::pi / 180.0;
 constexpr double kDegPerHour = kDegToRad / 3600.0;       // deg/h -> rad/s
 constexpr double kPerRootHour = 1.0 / 60.0;              // x/sqrt(h) -> x/sqrt(s)
 constexpr double kMilliG = 9.80665e-3;                   // mg -> m/s^2
-
-// Grade presets: the simulator's table (sim/drilling.hpp) of typical sensor classes.
-struct Grade {
-  const char* name;
-  double gyro_bias_dph, gyro_arw, accel_bias_mg, accel_vrw, gyro_scale_ppm, gyro_misalignment_mrad, gyro_g_dph_g, accel_scale_ppm, accel_misalignment_mrad;
-  double gyro_range_dps, accel_range_g;  // the class's usual ranges (the simulator's gyro ranges)
-  double gyro_temp_dph_c, accel_temp_mg_c;  // typical bias temperature coefficients (the simulator's)
-};
-constexpr Grade kGrades[] = {{"navigation", 0.01, 0.002, 0.025, 0.005, 5, 0.02, 0.1, 20, 0.02, 500, 25, 0.002, 0.002},
-                             {"tactical", 1.0, 0.05, 0.3, 0.03, 100, 0.1, 1, 100, 0.1, 1000, 40, 0.05, 0.01},
-                             {"mems", 10.0, 0.3, 2.0, 0.06, 1000, 1.0, 10, 500, 0.5, 2000, 16, 0.2, 0.05}};
 
 std::optional<double> optional_number(const estimator::ParameterReader& reader, const estimator::Parameters& given,
                                       const std::string& name, double min, double max) {
@@ -176,17 +166,15 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
 
   const auto grade_it = given.find("imu_grade");
   const std::string grade_name = grade_it == given.end() ? "tactical" : grade_it->second;
-  const Grade* grade = nullptr;
-  for (const Grade& g : kGrades) {
-    if (grade_name == g.name) grade = &g;
-  }
+  // The presets: the table the survey's model of a navigator's stations reads too.
+  const ImuGradeFigures* grade = find_imu_grade(grade_name);
   if (grade == nullptr) {
     throw ParameterError("parameter 'imu_grade': '" + grade_name + "' is not one of navigation, tactical, mems");
   }
   const std::optional<double> arw = optional_number(r, given, "gyro_arw_deg_rt_h", 0, 100);
   const std::optional<double> vrw = optional_number(r, given, "accel_vrw_mps_rt_h", 0, 100);
-  c.gyro_arw = arw.value_or(grade->gyro_arw) * kDegToRad * kPerRootHour;
-  c.accel_vrw = vrw.value_or(grade->accel_vrw) * kPerRootHour;
+  c.gyro_arw = arw.value_or(grade->gyro_arw_deg_rt_h) * kDegToRad * kPerRootHour;
+  c.accel_vrw = vrw.value_or(grade->accel_vrw_mps_rt_h) * kPerRootHour;
   c.gyro_noise_stated = arw.has_value();
   c.accel_noise_stated = vrw.has_value();
   c.gyro_bias_sd = optional_number(r, given, "gyro_bias_dph", 0, 1e5).value_or(grade->gyro_bias_dph) * kDegPerHour;

@@ -254,6 +254,12 @@ bool needs_latitude(const ToolCode& tool) {
   return false;
 }
 
+bool has_gyro_terms(const ToolCode& tool) {
+  for (const Term& t : tool.terms)
+    if (detail::gyro_kind(t.weight_function) != detail::GyroKind::None) return true;
+  return false;
+}
+
 Result propagate(const std::vector<Station>& stations, const ToolCode& tool, const Field& field) {
   std::vector<Rad> s;
   for (const auto& st : stations) {

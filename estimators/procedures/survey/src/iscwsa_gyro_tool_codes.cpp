@@ -2,10 +2,11 @@
 // codes A020Gb "GYRO-NS" (gyrocompass at each station), A019Gb "GYRO-MWD" and A021Gc "GYRO-NS-CT"
 // (gyrocompass to 15 deg, then continuous from that initialisation to 150 deg at 2743.2 m/h);
 // and plumb's two strapdown grades run continuously from a known azimuth, with the figures of the
-// grades the simulator and the navigator share (sim/include/plumb/sim/imu_model.hpp,
-// docs/navigator.md): gyro bias and angle random walk, accelerometer bias, scale factor and
-// misalignment.
+// grades the navigator's presets are (plumb/core/imu_grade.hpp, docs/navigator.md): gyro bias and
+// angle random walk, accelerometer bias, scale factor and misalignment.
 #include "iscwsa_gyro_tool_codes.hpp"
+
+#include "plumb/core/imu_grade.hpp"
 
 namespace plumb::survey::iscwsa::detail {
 namespace {
@@ -73,23 +74,15 @@ ToolCode gyro_ns_ct() {
   return t;
 }
 
-// A strapdown triad run continuously from the first station, whose azimuth was given (or read off
-// the magnetometer at alignment: EXT-REF, 0.5 deg), drifting with the grade's gyro bias and random
-// walk over the stations' own times.
-ToolCode strapdown(const std::string& grade, double gyro_bias_deg_h, double arw_deg_rt_h, double accel_bias_mg,
-                   double scale_factor_ppm, double misalignment_mrad) {
+// One of plumb's strapdown grades run from a known azimuth (given, or read off the magnetometer at
+// alignment: EXT-REF, 0.5 deg), with the grade's figures from the table the navigator's imu_grade
+// presets are (plumb/core/imu_grade.hpp).
+ToolCode strapdown_grade(const std::string& grade) {
+  const ImuGradeFigures& g = *find_imu_grade(grade);
   // Named within the survey message's 63 characters (idl/survey.idl).
-  ToolCode t{"GYRO:" + grade + " (plumb strapdown, continuous)", 5, 0.000572615, depth_and_alignment()};
-  const auto acc = accelerometers(misalignment_mrad * kMilliradianDeg, scale_factor_ppm * 1e-6, accel_bias_mg * kMilliG);
-  t.terms.insert(t.terms.end(), acc.begin(), acc.end());
-  t.terms.push_back({"SAGE", "SAGE", 0.2, "deg", S});
+  ToolCode t = strapdown_run("GYRO:" + grade + " (plumb strapdown, continuous)",
+                             {g.gyro_bias_dph, g.gyro_arw_deg_rt_h, g.accel_bias_mg, g.accel_scale_ppm, g.accel_misalignment_mrad});
   t.terms.push_back({"EXT-REF", "EXT-REF", 0.5, "deg", S});
-  t.terms.push_back({"GXYZ-GD", "GXYZ-GD", gyro_bias_deg_h, "deg/hr", S});
-  t.terms.push_back({"GXYZ-GRW", "GXYZ-GRW", arw_deg_rt_h, "deg/sqrt(hr)", S});
-  t.gyro.static_end_inc_deg = -1;  // no gyrocompass station
-  t.gyro.continuous = true;
-  t.gyro.initialisation = GyroInitialisation::Reference;
-  t.gyro.running_speed_m_per_h = 0;  // the stations' times: a drilling run stops and goes
   return t;
 }
 
@@ -101,9 +94,26 @@ std::optional<ToolCode> builtin_gyro_tool_code(const std::string& name) {
   if (name == "GYRO-NS") return gyro_ns();
   if (name == "GYRO-NS-CT") return gyro_ns_ct();
   if (name == "GYRO-MWD") return gyro_mwd();
-  if (name == "GYRO:tactical") return strapdown("tactical", 1.0, 0.05, 0.3, 100, 0.1);
-  if (name == "GYRO:mems") return strapdown("mems", 10.0, 0.3, 2.0, 500, 0.5);
+  if (name == "GYRO:tactical") return strapdown_grade("tactical");
+  if (name == "GYRO:mems") return strapdown_grade("mems");
   return std::nullopt;
+}
+
+// A strapdown triad run continuously from the first station, drifting with its gyro bias and random
+// walk over the stations' own times.
+ToolCode strapdown_run(const std::string& name, const StrapdownFigures& f) {
+  ToolCode t{name, 5, 0.000572615, depth_and_alignment()};
+  const auto acc = accelerometers(f.accel_misalignment_mrad * kMilliradianDeg, f.accel_scale_ppm * 1e-6,
+                                  f.accel_bias_mg * kMilliG);
+  t.terms.insert(t.terms.end(), acc.begin(), acc.end());
+  t.terms.push_back({"SAGE", "SAGE", 0.2, "deg", S});
+  t.terms.push_back({"GXYZ-GD", "GXYZ-GD", f.gyro_bias_dph, "deg/hr", S});
+  t.terms.push_back({"GXYZ-GRW", "GXYZ-GRW", f.gyro_arw_deg_rt_h, "deg/sqrt(hr)", S});
+  t.gyro.static_end_inc_deg = -1;  // no gyrocompass station
+  t.gyro.continuous = true;
+  t.gyro.initialisation = GyroInitialisation::Reference;
+  t.gyro.running_speed_m_per_h = 0;  // the stations' times: a drilling run stops and goes
+  return t;
 }
 
 }  // namespace plumb::survey::iscwsa::detail

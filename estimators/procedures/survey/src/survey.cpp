@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -51,21 +52,25 @@ Survey::Survey(SurveyOptions o) : options_(std::move(o)) {
   }
 }
 
+namespace {
+
+// A station's sigma beyond the model's own at that station: the excess variance of each angle
+// (0 where the model's is larger; the whole sigma where the model's is not a number).
+StationSigma beyond_model(StationSigma s, const Eigen::Vector2d& model_variance_rad2) {
+  const auto excess = [](double sd_deg, double model_rad2) {
+    const double model_deg2 = model_rad2 / (kDeg * kDeg);
+    return std::isfinite(model_deg2) ? std::sqrt(std::max(0.0, sd_deg * sd_deg - model_deg2)) : sd_deg;
+  };
+  s.inclination_sd_deg = excess(s.inclination_sd_deg, model_variance_rad2(0));
+  s.azimuth_sd_deg = excess(s.azimuth_sd_deg, model_variance_rad2(1));
+  return s;
+}
+
+}  // namespace
+
 void Survey::add_model_uncertainty(SurveyRow& row) {
-  // The measured noise (each station's sigma from its estimator and its depth sigma) as plumb's
-  // own random terms; the model's terms beside it.
-  ErrorModel noise_only;
-  noise_only.total_b_uT = options_.errors.total_b_uT;
-  noise_only.dip_deg = options_.errors.dip_deg;
-  noise_only.gravity_mps2 = options_.errors.gravity_mps2;
-  const ErrorModel& own = options_.tool_code ? noise_only : options_.errors;
-  const PositionUncertainty measured = propagate_uncertainty(geometry_, sigma_, own).back();
-  const PositionUncertainty measured_random = propagate_uncertainty(geometry_, sigma_, noise_only).back();
   const Station& s = row.station;
-  double inc_var = s.inclination_sd_deg * s.inclination_sd_deg, azi_var = s.azimuth_sd_deg * s.azimuth_sd_deg;
-  double inc_random = inc_var, azi_random = azi_var;
-  row.uncertainty.covariance = measured.covariance;
-  row.random_uncertainty.covariance = measured_random.covariance;
+  std::optional<iscwsa::Result> model;
   if (options_.tool_code) {
     std::vector<iscwsa::Station> stations;
     for (std::size_t k = 0; k < geometry_.size(); ++k) {
@@ -82,11 +87,33 @@ void Survey::add_model_uncertainty(SurveyRow& row) {
     field.latitude_deg = options_.latitude_deg;
     field.true_azimuth_offset_deg = true_azimuth_offset_deg(options_.reference, options_.north);
     field.first_station_surveyed = options_.first_station_surveyed;
-    const iscwsa::Result model = iscwsa::propagate(stations, *options_.tool_code, field);
-    row.uncertainty.covariance += model.total.back();
-    row.random_uncertainty.covariance += model.random.back();
-    const Eigen::Vector2d all = model.angle_variance.back() / (kDeg * kDeg);
-    const Eigen::Vector2d random = model.random_angle_variance.back() / (kDeg * kDeg);
+    model = iscwsa::propagate(stations, *options_.tool_code, field);
+  }
+  // The measured noise (each station's sigma from its estimator and its depth sigma) as plumb's
+  // own random terms; the model's terms beside it. A station's sigma that already holds the
+  // model's terms counts by its excess over them only (SurveyOptions::station_sigma_beyond_model):
+  // a station's model variance does not depend on the stations after it, so the excess of an
+  // earlier station is the one it had when it was added.
+  std::vector<StationSigma> sigma = sigma_;
+  if (model && options_.station_sigma_beyond_model)
+    for (std::size_t k = 0; k < sigma.size(); ++k) sigma[k] = beyond_model(sigma[k], model->angle_variance[k]);
+  ErrorModel noise_only;
+  noise_only.total_b_uT = options_.errors.total_b_uT;
+  noise_only.dip_deg = options_.errors.dip_deg;
+  noise_only.gravity_mps2 = options_.errors.gravity_mps2;
+  const ErrorModel& own = options_.tool_code ? noise_only : options_.errors;
+  const PositionUncertainty measured = propagate_uncertainty(geometry_, sigma, own).back();
+  const PositionUncertainty measured_random = propagate_uncertainty(geometry_, sigma, noise_only).back();
+  const StationSigma& here = sigma.back();
+  double inc_var = here.inclination_sd_deg * here.inclination_sd_deg, azi_var = here.azimuth_sd_deg * here.azimuth_sd_deg;
+  double inc_random = inc_var, azi_random = azi_var;
+  row.uncertainty.covariance = measured.covariance;
+  row.random_uncertainty.covariance = measured_random.covariance;
+  if (model) {
+    row.uncertainty.covariance += model->total.back();
+    row.random_uncertainty.covariance += model->random.back();
+    const Eigen::Vector2d all = model->angle_variance.back() / (kDeg * kDeg);
+    const Eigen::Vector2d random = model->random_angle_variance.back() / (kDeg * kDeg);
     inc_var += all(0), azi_var += all(1), inc_random += random(0), azi_random += random(1);
   }
   describe_covariance(row.uncertainty);

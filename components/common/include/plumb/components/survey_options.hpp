@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "plumb/survey/navigator_tool_code.hpp"
 #include "plumb/survey/station_detector.hpp"
 #include "plumb/survey/survey.hpp"
 
@@ -44,10 +45,17 @@ void add_survey_options(CLI::App& app, SurveyCliOptions& o);
 // Throws std::invalid_argument (a usage error) for options that cannot work, e.g. a true survey
 // without declination, or no reference field for a check that is not skipped; std::runtime_error
 // for an unreadable reference file.
-// `estimator` names the estimator that measures the stations: the strapdown navigator's survey is
-// no magnetic survey, and `--error-model auto` gives it plumb's own propagation (ISCWSA's MWD model
-// elsewhere).
-survey::SurveyOptions make_survey_options(const SurveyCliOptions& o, const std::string& estimator = "");
+// `estimator` names the estimator that measures the stations. The strapdown navigator's survey is
+// no magnetic survey: `--error-model auto` gives it the ISCWSA gyro model of the navigator's own
+// figures (survey::iscwsa::navigator_tool_code) from `navigator`, its parameters with their values
+// in use, or plumb's own propagation when they are not known (nullptr: the caller says so); ISCWSA's
+// MWD model elsewhere. A gyro model on the navigator's stations counts each station's own sigma by
+// its excess over the model's only (survey::SurveyOptions::station_sigma_beyond_model). The
+// navigator's latitude serves a gyrocompass's terms when --latitude is not given.
+survey::SurveyOptions make_survey_options(const SurveyCliOptions& o, const std::string& estimator = "",
+                                          const survey::iscwsa::NavigatorParameters* navigator = nullptr);
+// The plugin whose stations are the strapdown navigator's.
+inline constexpr const char* kNavigatorPlugin = "strapdown";
 // Throws std::invalid_argument for bad values, std::runtime_error for an unreadable tally file.
 survey::DetectorOptions make_detector_options(const SurveyCliOptions& o);
 

@@ -136,5 +136,7 @@ double to_model_unit(const std::string& weight_function, double magnitude, const
 
 // Whether the tool code gyrocompasses (its terms need Field::latitude_deg).
 bool needs_latitude(const ToolCode& tool);
+// Whether the tool code has a gyro's terms (the ISCWSA gyro model, SPE 90408).
+bool has_gyro_terms(const ToolCode& tool);
 
 }  // namespace plumb::survey::iscwsa

@@ -65,6 +65,13 @@ struct SurveyOptions {
   // declination terms (AZ, DBH) are left out of a magnetic survey, whose north is magnetic north.
   std::optional<iscwsa::ToolCode> tool_code;
   double latitude_deg = std::numeric_limits<double>::quiet_NaN();  // the gyro model's gyrocompass terms
+  // The stations' own angle sigmas already hold what the tool code's terms describe: the strapdown
+  // navigator's filter carries its drift since alignment in every row's sigma. Each station's sigma
+  // then enters only by what it exceeds the model's angle sigma at that station (the excess
+  // variance, inclination and azimuth each), so a station where the navigator knows it is blind
+  // keeps its width, a normal one is not counted twice, and no station is held narrower than
+  // either says. Without a tool code it does nothing.
+  bool station_sigma_beyond_model = false;
   // The ISCWSA model's first station: a tie-in point (false) or a survey whose errors tilt the
   // half course below it (iscwsa::Field::first_station_surveyed).
   bool first_station_surveyed = false;

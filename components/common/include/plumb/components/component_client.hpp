@@ -1,6 +1,7 @@
 // The client side of plumb/component/request and plumb/component/reply, shared by the verbs of
-// `plumb component` and `plumb param`: a request to one estimator host, sent again until that host
-// answers or the wait is over (the host answers a repeat with its first reply and applies it once).
+// `plumb component` and `plumb param` and by plumb-survey (which asks the navigator's host for its
+// parameters): a request to one estimator host, sent again until that host answers or the wait is
+// over (the host answers a repeat with its first reply and applies it once).
 #pragma once
 
 #include <chrono>
@@ -13,11 +14,11 @@
 #include "plumb/components/cli.hpp"
 #include "plumb/transport/transport.hpp"
 
-namespace plumb::cli {
+namespace plumb::components {
 
 class ComponentClient {
  public:
-  ComponentClient(const components::TransportOptions& transport, double wait_s);
+  ComponentClient(const TransportOptions& transport, double wait_s);
   // The host's answer, or nullopt when `request.host` did not answer within the wait.
   std::optional<topics::ComponentReply> ask(topics::ComponentRequest request);
   // Every host's answer to a list for all (a request with no host), collected for `listen_s`.
@@ -29,7 +30,7 @@ class ComponentClient {
   void exchange(topics::ComponentRequest& request, double wait_s, std::chrono::milliseconds poll,
                 const std::function<bool(const topics::ComponentReply&)>& take);
 
-  components::Connection conn_;
+  Connection conn_;
   transport::Reader<topics::ComponentReply> replies_;
   transport::Writer<topics::ComponentRequest> requests_;
   double wait_s_;
@@ -37,9 +38,4 @@ class ComponentClient {
   std::uint64_t next_id_ = 1;
 };
 
-// Runs a request against HOST and prints the refusal (one line on stderr, exit 1) or hands the
-// accepted reply to `print` (exit 0). A host that did not answer: exit 1 with no_answer's line.
-int run_component_request(const components::TransportOptions& transport, double wait_s, topics::ComponentRequest request,
-                          void (*print)(const topics::ComponentReply&));
-
-}  // namespace plumb::cli
+}  // namespace plumb::components

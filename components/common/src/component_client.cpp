@@ -1,4 +1,4 @@
-#include "component_client.hpp"
+#include "plumb/components/component_client.hpp"
 
 #include <unistd.h>
 
@@ -12,7 +12,7 @@
 #include "plumb/components/status_reporter.hpp"
 #include "plumb/transport/topic_names.hpp"
 
-namespace plumb::cli {
+namespace plumb::components {
 namespace {
 
 namespace names = transport::topic_names;
@@ -23,14 +23,14 @@ constexpr std::chrono::milliseconds kResendEvery{500};
 
 std::string make_client_id() {
   std::ostringstream id;
-  id << components::host_name() << ':' << ::getpid() << ':' << std::hex
+  id << host_name() << ':' << ::getpid() << ':' << std::hex
      << (RequestClock::now().time_since_epoch().count() & 0xffffff);
   return id.str();
 }
 
 // On a secured domain only an identity granted plumb/component/request may send requests: said so,
 // rather than only the vendor's "not allowed".
-transport::Writer<topics::ComponentRequest> make_request_writer(components::Connection& conn) {
+transport::Writer<topics::ComponentRequest> make_request_writer(Connection& conn) {
   try {
     return transport::make_writer<topics::ComponentRequest>(*conn.participant, names::kComponentRequest,
                                                             transport::default_qos_for_topic(names::kComponentRequest));
@@ -43,8 +43,8 @@ transport::Writer<topics::ComponentRequest> make_request_writer(components::Conn
 
 }  // namespace
 
-ComponentClient::ComponentClient(const components::TransportOptions& transport, double wait_s)
-    : conn_(components::connect(transport, "plumb-component")),
+ComponentClient::ComponentClient(const TransportOptions& transport, double wait_s)
+    : conn_(connect(transport, "plumb-component")),
       replies_(transport::make_reader<topics::ComponentReply>(*conn_.participant, names::kComponentReply,
                                                               transport::default_qos_for_topic(names::kComponentReply))),
       requests_(make_request_writer(conn_)),
@@ -60,7 +60,7 @@ void ComponentClient::exchange(topics::ComponentRequest& request, double wait_s,
   const auto until = RequestClock::now() + std::chrono::duration<double>(wait_s);
   auto next_send = RequestClock::now();
   topics::ComponentReply reply;
-  while (!components::g_stop && RequestClock::now() < until) {
+  while (!g_stop && RequestClock::now() < until) {
     if (RequestClock::now() >= next_send && requests_.matched_readers() > 0) {
       requests_.write(request);
       next_send = RequestClock::now() + kResendEvery;
@@ -105,21 +105,4 @@ std::string ComponentClient::no_answer(const std::string& host) {
   return out.str();
 }
 
-int run_component_request(const components::TransportOptions& transport, double wait_s, topics::ComponentRequest request,
-                          void (*print)(const topics::ComponentReply&)) {
-  components::install_stop_handler();
-  ComponentClient client(transport, wait_s);
-  const std::optional<topics::ComponentReply> reply = client.ask(request);
-  if (!reply) {
-    components::print_error("plumb", client.no_answer(request.host));
-    return 1;
-  }
-  if (reply->result != topics::COMPONENT_DONE) {
-    components::print_error("plumb", reply->message);
-    return 1;
-  }
-  print(*reply);
-  return 0;
-}
-
-}  // namespace plumb::cli
+}  // namespace plumb::components
