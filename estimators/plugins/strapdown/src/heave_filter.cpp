@@ -31,6 +31,7 @@ Eigen::Matrix2d oscillator(double omega, double dt) {
 void HeaveFilter::start(double depth, double depth_sd) {
   const double white = std::max(kMinWhiteSdM, kWhiteShare * depth_sd);
   const double swell_sd = std::sqrt(std::max(0.0, depth_sd * depth_sd - white * white));
+  swell_models_awake_ = swell_sd >= kMinSwellSdM;
   for (int i = 0; i <= kModels; ++i) {
     Model& m = models_[static_cast<std::size_t>(i)];
     m = Model{};
@@ -47,7 +48,7 @@ void HeaveFilter::start(double depth, double depth_sd) {
 // The trend: position and a speed that wanders (a random walk of kRopSd over kSpeedWanderS). The
 // swell: a damped oscillator whose transition is exact for the step and whose noise keeps its
 // stationary variance, swell_sd^2 and (omega swell_sd)^2 (P_inf - Phi P_inf Phi^T).
-void HeaveFilter::predict(Model& m, double dt, double omega, double swell_sd) const {
+void HeaveFilter::predict(Model& m, double dt, int model, double swell_sd) {
   Mat4 phi = Mat4::Identity();
   phi(0, 1) = dt;
   Mat4 q = Mat4::Zero();
@@ -55,8 +56,14 @@ void HeaveFilter::predict(Model& m, double dt, double omega, double swell_sd) co
   q(0, 0) = qv * dt * dt * dt / 3;
   q(0, 1) = q(1, 0) = qv * dt * dt / 2;
   q(1, 1) = qv * dt;
-  if (omega > 0) {
-    const Eigen::Matrix2d osc = oscillator(omega, dt);
+  if (model > 0) {
+    // (Reports come at a steady interval: the transitions are computed once for it.)
+    if (dt != oscillator_dt_) {
+      for (int i = 1; i <= kModels; ++i) oscillators_[static_cast<std::size_t>(i)] = oscillator(omega_of(i), dt);
+      oscillator_dt_ = dt;
+    }
+    const double omega = omega_of(model);
+    const Eigen::Matrix2d& osc = oscillators_[static_cast<std::size_t>(model)];
     phi.block<2, 2>(2, 2) = osc;
     const Eigen::Matrix2d p_inf = Eigen::Vector2d(swell_sd * swell_sd, omega * omega * swell_sd * swell_sd).asDiagonal();
     q.block<2, 2>(2, 2) = p_inf - osc * p_inf * osc.transpose();
@@ -93,16 +100,32 @@ void HeaveFilter::report(double t, double depth, bool still, double depth_sd) {
   const double swell_sd = std::sqrt(std::max(0.0, depth_sd * depth_sd - white * white));
   const double forget = std::exp(-dt / kMemoryS);
   const Eigen::Matrix<double, 1, 4> on_depth(1, 0, 1, 0), on_speed(0, 1, 0, 0);
-  for (int i = 0; i <= kModels; ++i) {
+  // Where the depth's noise leaves no room for a swell (a land rig's centimetre), the swell models
+  // would be the no-swell one: they sleep, and wake from it when the noise grows (a swell measured).
+  const bool room = swell_sd >= kMinSwellSdM;
+  if (room && !swell_models_awake_) {
+    for (int i = 1; i <= kModels; ++i) {
+      Model& m = models_[static_cast<std::size_t>(i)];
+      m = models_[0];
+      m.x.tail<2>().setZero();
+      m.p.block<2, 4>(2, 0).setZero();
+      m.p.block<4, 2>(0, 2).setZero();
+      m.p(2, 2) = swell_sd * swell_sd;
+      m.p(3, 3) = swell_sd * swell_sd * omega_of(i) * omega_of(i);
+    }
+  }
+  swell_models_awake_ = room;
+  const int last = room ? kModels : 0;
+  for (int i = 0; i <= last; ++i) {
     Model& m = models_[static_cast<std::size_t>(i)];
-    predict(m, dt, i > 0 ? omega_of(i) : 0.0, i > 0 ? swell_sd : 0.0);
+    predict(m, dt, i, i > 0 ? swell_sd : 0.0);
     if (still) update(m, 0.0, on_speed, kStillSpeedSd * kStillSpeedSd);
   }
   // The swell this report carries, from the models before they see it (the reports before it):
   // what is left of the report once it is taken out is the report's own noise and what the
   // prediction is not sure of, independent of each other.
   take_out_predicted_swell(white);
-  for (int i = 0; i <= kModels; ++i) {
+  for (int i = 0; i <= last; ++i) {
     Model& m = models_[static_cast<std::size_t>(i)];
     const double r = i > 0 ? white * white : depth_sd * depth_sd;
     m.log_likelihood = forget * m.log_likelihood + update(m, depth, on_depth, r);
@@ -111,10 +134,12 @@ void HeaveFilter::report(double t, double depth, bool still, double depth_sd) {
 
 void HeaveFilter::take_out_predicted_swell(double white) {
   best_ = 0;
+  found_ = false;
+  swell_ = 0;
+  if (!swell_models_awake_) return;
   for (int i = 1; i <= kModels; ++i)
     if (models_[static_cast<std::size_t>(i)].log_likelihood > models_[static_cast<std::size_t>(best_)].log_likelihood) best_ = i;
   found_ = best_ > 0 && models_[static_cast<std::size_t>(best_)].log_likelihood - models_[0].log_likelihood > kClearMargin;
-  swell_ = 0;
   if (!found_) return;
   // The swell models' mixture, by their likelihoods (the no-swell model lost the test).
   const double top = models_[static_cast<std::size_t>(best_)].log_likelihood;

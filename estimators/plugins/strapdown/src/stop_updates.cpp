@@ -61,7 +61,7 @@ void StopUpdates::take_depth(double t, double depth, bool prev_had_depth, const 
   if (!latest_depth_ || depth != *latest_depth_ || !prev_had_depth) {
     latest_depth_t_ = t;
     heave_.report(t, depth, still, depth_sd);
-    // Said once the swell has been found for a minute: its period is settled by then.
+    // Said once the swell has been found for two minutes: its period is settled by then.
     if (!heave_.found()) heave_found_since_.reset();
     else if (!heave_found_since_) heave_found_since_ = t;
     if (heave_found_since_ && t - *heave_found_since_ >= kHeaveSettledS && !heave_said_) {

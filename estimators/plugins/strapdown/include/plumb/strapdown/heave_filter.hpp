@@ -56,6 +56,7 @@ class HeaveFilter {
   static constexpr double kSpeedWanderS = 2;      // the trend's speed changes by rop_sd over this
   static constexpr double kRestartAfterS = 60;    // reports this far apart start the bank again
   static constexpr double kReportIntervalS = 0.9; // a depth read at the IMU's rate: a report a second
+  static constexpr double kMinSwellSdM = 0.005;   // a swell's rms below this is no swell worth a model
 
  private:
   using Vec4 = Eigen::Matrix<double, 4, 1>;
@@ -67,12 +68,15 @@ class HeaveFilter {
     double log_likelihood = 0;
   };
   void start(double depth, double depth_sd);
-  void predict(Model& m, double dt, double omega, double swell_sd) const;
+  void predict(Model& m, double dt, int model, double swell_sd);
   static double update(Model& m, double z, const Eigen::Matrix<double, 1, 4>& h, double r);
   void take_out_predicted_swell(double white);
 
   std::array<Model, kModels + 1> models_;  // [0]: no swell
   std::array<double, kModels + 1> weight_{};  // of the swell models, while one is found
+  bool swell_models_awake_ = false;
+  std::array<Eigen::Matrix2d, kModels + 1> oscillators_{};  // their transitions over oscillator_dt_
+  double oscillator_dt_ = -1;
   std::optional<double> last_t_;
   double swell_ = 0, residual_var_ = 0;
   bool found_ = false;

@@ -88,7 +88,7 @@ class StopUpdates {
   HeaveFilter heave_;
   bool heave_said_ = false;
   std::optional<double> heave_found_since_;
-  static constexpr double kHeaveSettledS = 60;
+  static constexpr double kHeaveSettledS = 120;
   std::vector<std::string> notices_;
   std::optional<Eigen::Quaterniond> last_stop_attitude_;  // at the end of the last stop
   double latest_depth_t_ = 0;    // when the latest depth report came (its value first seen)
