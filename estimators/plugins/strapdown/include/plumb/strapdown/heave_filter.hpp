@@ -16,7 +16,6 @@
 // along-axis acceleration read as tilt) for no better end.
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <optional>
 

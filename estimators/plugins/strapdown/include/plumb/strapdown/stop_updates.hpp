@@ -31,12 +31,10 @@ double mean_force_sd(const StillStats& stats, double accel_vrw, double dt);
 class StopUpdates {
  public:
   void reset(const NavigatorConfig& config);
-  // An aligned reading's depth report (prev_had_depth: whether the reading before carried one;
-  // still: the stillness decision the filter takes for it; depth_sd: the depth's noise, stated or
-  // measured).
+  // A reading's depth report (prev_had_depth: whether the reading before carried one; still: the
+  // stillness decision the filter takes for it; depth_sd: the depth's noise, stated or measured).
+  // Before the alignment only the swell's models take it (the alignment's depth is their trend).
   void take_depth(double t, double depth, bool prev_had_depth, const FilterState& filter, bool still, double depth_sd);
-  // A floating rig's swell found on the depth reports (none: the period is empty).
-  const HeaveFilter& heave() const { return heave_; }
   // What the log should say once: a swell found on the depth reports.
   std::vector<std::string> take_notices() { return std::exchange(notices_, {}); }
   // An aligned reading's stillness: a stop that starts restarts the stop's means.
