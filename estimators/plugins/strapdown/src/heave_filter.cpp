@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "plumb/strapdown/navigator_common.hpp"
-
 namespace plumb::strapdown {
 
 namespace {
