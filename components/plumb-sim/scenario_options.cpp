@@ -68,9 +68,14 @@ void add_scenario_options(CLI::App& app, ScenarioOptions& o) {
                                          "stickslip:MEAN:PERIOD_S")
       ->excludes(rpm);
   app.add_option("--g", o.g, "gravity, m/s^2")->capture_default_str();
-  app.add_option("--field", o.field, "total magnetic field, uT")->capture_default_str();
-  app.add_option("--dip", o.dip, "magnetic dip, deg, positive down")->capture_default_str();
-  app.add_option("--latitude", o.latitude, "latitude for the earth rate the gyros see, deg")->capture_default_str();
+  // (Each scenario keeps its own field and latitude unless given: a default shown here would be the
+  // platform's only, and a gyrocompass run told the wrong latitude looks degrees off.)
+  app.add_option("--field", o.field, "total magnetic field, uT (default: platform 48.4; drilling, drilling-survey and "
+                                     "walk 50)");
+  app.add_option("--dip", o.dip, "magnetic dip, deg, positive down (default: platform 45.5; drilling, "
+                                 "drilling-survey and walk 60)");
+  app.add_option("--latitude", o.latitude, "latitude for the earth rate the gyros see, deg (default: platform 45; "
+                                           "drilling, drilling-survey and walk 35)");
   app.add_option("--rate-hz", o.rate_hz, "sample rate, Hz (drilling: the IMU rate, default 100; walk: default 400)")->capture_default_str();
   auto* duration = app.add_option("--duration", o.duration_s, "record length, s")->capture_default_str();
   app.add_option("--count", o.count, "number of samples (instead of --duration)")->excludes(duration);
