@@ -75,7 +75,6 @@ class LiveSurvey {
       : o_(o),
         result_(components::make_survey_options(o.survey, o.estimator,
                                                 navigator.parameters ? &*navigator.parameters : nullptr)),
-        error_model_fallback_(!navigator.status.empty()),
         error_model_said_(navigator.said),
         error_model_status_(navigator.status),
         store_(o.file, result_, note),
@@ -92,7 +91,7 @@ class LiveSurvey {
         detector_(components::make_detector_options(o.survey), [this](survey::Station st) { on_station(st); }, note),
         clearance_(o.clearance, offset_model(o, result_.options()), reference_model(o, result_.options()),
                    result_.options().reference, note) {
-    if (error_model_fallback_) last_error_ = error_model_status_;
+    if (error_model_fallback()) last_error_ = error_model_status_;
     if (clearance_.active())
       clearance_writer_.emplace(transport::make_writer<topics::Clearance>(
           *conn_.participant, transport::topic_names::kClearance,
@@ -201,7 +200,7 @@ class LiveSurvey {
   // Degraded: stations refused, the newest station at the clearance alarm, or the navigator's error
   // model replaced by plumb's own terms (its host did not answer).
   std::string state() const {
-    return refused_ > 0 || error_model_fallback_ || clearance_.level() == survey::ClearanceLevel::Alarm ? "degraded"
+    return refused_ > 0 || error_model_fallback() || clearance_.level() == survey::ClearanceLevel::Alarm ? "degraded"
                                                                                                         : "running";
   }
   // The clearance while not clear comes first: it is what the driller must see.
@@ -227,7 +226,7 @@ class LiveSurvey {
                                    {"attitude_gaps", continuity_.gaps()},
                                    {"attitude_windows_missing", continuity_.windows_missing()},
                                    {"readers", writer_.matched_readers()},
-                                   {"error_model_fallback", error_model_fallback_ ? 1u : 0u}};
+                                   {"error_model_fallback", error_model_fallback() ? 1u : 0u}};
   }
 
   components::CounterList all_counters() {
@@ -324,7 +323,8 @@ class LiveSurvey {
 
   const LiveOptions& o_;
   survey::Survey result_;
-  bool error_model_fallback_;    // auto on the navigator's stations without its parameters
+  // auto on the navigator's stations without its parameters: plumb's own terms, said on status.
+  bool error_model_fallback() const { return !error_model_status_.empty(); }
   std::string error_model_said_, error_model_status_;
   SurveyStore store_;
   components::Connection conn_;
@@ -368,8 +368,12 @@ int run_live_survey(const LiveOptions& o) {
   NavigatorAnswer navigator;
   if (o.survey.error_model == "auto" && o.estimator == components::kNavigatorPlugin) {
     components::install_stop_handler();
-    navigator = ask_navigator_parameters(o.transport, o.estimator_host.empty() ? components::host_name() : o.estimator_host,
-                                         o.estimator, o.estimator_wait_s);
+    const std::string host = o.estimator_host.empty() ? components::host_name() : o.estimator_host;
+    char wait[32];
+    std::snprintf(wait, sizeof wait, "%g", o.estimator_wait_s);
+    note("error model: asking estimator host '" + host + "' for the " + o.estimator + " navigator's parameters (up to " +
+         wait + " s)");
+    navigator = ask_navigator_parameters(o.transport, host, o.estimator, o.estimator_wait_s);
   }
   LiveSurvey survey(o, navigator);
   return survey.run();
