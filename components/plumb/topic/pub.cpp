@@ -40,6 +40,10 @@ int run_pub(const PubOptions& o) {
     const auto t0 = Clock::now();
     while (!components::g_stop && writer.matched_readers() == 0 && seconds_since(t0) < o.wait_s)
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    // The writer knowing the reader does not mean the reader knows the writer yet: a volatile reader
+    // drops what comes from a writer it has not matched (a Cyclone DDS reader behind a Fast DDS writer
+    // lost the first of three attitudes). Give the reader's side of discovery a moment to finish.
+    if (writer.matched_readers() > 0) std::this_thread::sleep_for(std::chrono::milliseconds(250));
     const int count = o.count > 0 ? o.count : 1;
     const auto period = std::chrono::duration<double>(1.0 / std::max(o.rate_hz, 1e-3));
     auto next = Clock::now();
