@@ -41,6 +41,7 @@ void HeaveFilter::start(double depth, double depth_sd) {
       m.p(3, 3) = swell_sd * swell_sd * omega_of(i) * omega_of(i);
     }
   }
+  quiet_ = models_[0];
 }
 
 // The trend: position and a speed that wanders (a random walk of kRopSd over kSpeedWanderS). The
@@ -119,6 +120,8 @@ void HeaveFilter::report(double t, double depth, bool still, double depth_sd) {
     predict(m, dt, i, i > 0 ? swell_sd : 0.0);
     if (still) update(m, 0.0, on_speed, kStillSpeedSd * kStillSpeedSd);
   }
+  predict(quiet_, dt, 0, 0.0);
+  if (still) update(quiet_, 0.0, on_speed, kStillSpeedSd * kStillSpeedSd);
   // The swell this report carries, from the models before they see it (the reports before it):
   // what is left of the report once it is taken out is the report's own noise and what the
   // prediction is not sure of, independent of each other.
@@ -128,6 +131,7 @@ void HeaveFilter::report(double t, double depth, bool still, double depth_sd) {
     const double r = i > 0 ? white * white : depth_sd * depth_sd;
     m.log_likelihood = forget * m.log_likelihood + update(m, depth, on_depth, r);
   }
+  quiet_.log_likelihood = forget * quiet_.log_likelihood + update(quiet_, depth, on_depth, white * white);
 }
 
 void HeaveFilter::take_out_predicted_swell(double white) {
@@ -137,7 +141,8 @@ void HeaveFilter::take_out_predicted_swell(double white) {
   if (!swell_models_awake_) return;
   for (int i = 1; i <= kModels; ++i)
     if (models_[static_cast<std::size_t>(i)].log_likelihood > models_[static_cast<std::size_t>(best_)].log_likelihood) best_ = i;
-  found_ = best_ > 0 && models_[static_cast<std::size_t>(best_)].log_likelihood - models_[0].log_likelihood > kClearMargin;
+  const double no_swell = std::max(models_[0].log_likelihood, quiet_.log_likelihood);
+  found_ = best_ > 0 && models_[static_cast<std::size_t>(best_)].log_likelihood - no_swell > kClearMargin;
   if (!found_) return;
   // The swell models' mixture, by their likelihoods (the no-swell model lost the test).
   const double top = models_[static_cast<std::size_t>(best_)].log_likelihood;

@@ -72,6 +72,10 @@ class HeaveFilter {
   void take_out_predicted_swell(double white);
 
   std::array<Model, kModels + 1> models_;  // [0]: no swell
+  // No swell either, with the swell models' own white noise: reports quieter than the depth's
+  // stated noise are not a swell (a land rig's reports of 2 cm against 5 cm stated made the slowest
+  // swell, 16 s, win by its smaller white noise alone).
+  Model quiet_;
   std::array<double, kModels + 1> weight_{};  // of the swell models, while one is found
   bool swell_models_awake_ = false;
   std::array<Eigen::Matrix2d, kModels + 1> oscillators_{};  // their transitions over oscillator_dt_
