@@ -103,7 +103,7 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"still_depth_tol_m", "0.01", "with depth: largest depth change over 1 s of a still tool (m; never below 8 sigma of the depth noise)"},
       {"align_s", "30", "longest stretch of the first still period used for alignment (s)"},
       {"field_tol_uT", "0.5", "a stop's |B| further than this from the reference skips its azimuth update (uT)"},
-      {"dip_tol_deg", "0.3", "a stop's dip further than this from the reference skips its azimuth update (deg)"},
+      {"dip_tol_deg", "0.3", "a stop's dip further than this from the reference skips its azimuth update (deg; widened by three times what the accelerometers' stated bias and triad errors lean the dip between two toolfaces)"},
       {"mag_heading_sd_deg", "0.05", "magnetic heading model error per stop (deg), beside the noise"},
       {"mag_axial_bias_uT", "0.3", "magnetization of the drill string along the tool axis, 1 sigma (uT): it turns the magnetic azimuth the same way at every stop; 0: not modelled"},
       {"mag_update_s", "5", "field averaged this long per stop for the azimuth update (s)"},

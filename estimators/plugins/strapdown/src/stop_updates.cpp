@@ -325,6 +325,19 @@ void StopUpdates::still_updates(FilterState& filter, bool period_end, double dt_
   }
 }
 
+// The dip is read with the accelerometers' bias and the part of gravity their scale factors and
+// misalignments take for one, (K - I) C g: both lean the measured gravity by up to their size over
+// g, differently at every toolface, and the reference was read at the first stop's. Between two
+// toolfaces the dip then differs by up to sqrt(2) times that: for a noisier MEMS package (3 mg,
+// 1000 ppm, 1 mrad) 0.27 deg, 1 sigma, which skipped the azimuth update of an undisturbed stop after
+// a rotary segment on outside runs and left the azimuth to the gyros (1.1 deg off at the next
+// stop). The gate allows three times that beside dip_tol_deg.
+double StopUpdates::dip_tolerance(double g) const {
+  const double lean =
+      std::hypot(config_.accel_bias_sd, g * std::hypot(config_.accel_scale_sd, config_.accel_misalignment_sd)) / g;
+  return std::hypot(config_.dip_tol, 3.0 * std::numbers::sqrt2 * lean);
+}
+
 void StopUpdates::magnetic_update(FilterState& filter, const FieldReference& field, Counters& counters) {
   mag_done_this_period_ = true;
   // The gate sees the field as read, as the references learnt at alignment did; the heading, the
@@ -334,7 +347,7 @@ void StopUpdates::magnetic_update(FilterState& filter, const FieldReference& fie
   const double total = raw_b.norm(), dip = dip_of(f, raw_b);
   const double deg = std::numbers::pi / 180.0;
   if (std::abs(total - field.total_uT.value_or(total)) > config_.field_tol_uT ||
-      std::abs(dip - field.dip.value_or(dip)) > config_.dip_tol) {
+      std::abs(dip - field.dip.value_or(dip)) > dip_tolerance(filter.gravity())) {
     count(counters, "disturbed_field");
     last_field_warning_ = format("azimuth update skipped at a stop: field disturbed (|B| %.2f uT, dip %.2f deg; reference %.2f uT, ",
                                  total, dip / deg, field.total_uT.value_or(total)) +

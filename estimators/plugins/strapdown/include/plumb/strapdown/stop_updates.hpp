@@ -63,6 +63,8 @@ class StopUpdates {
  private:
   void still_updates(FilterState& filter, bool period_end, double dt_nominal, bool use_mag,
                      const FieldReference& field, Counters& counters);
+  // How far a stop's dip may be from the reference's before its field is called disturbed (rad).
+  double dip_tolerance(double g) const;
   void magnetic_update(FilterState& filter, const FieldReference& field, Counters& counters);
   void tally_update(FilterState& filter, Counters& counters);
   void late_stop_end(FilterState& filter, double depth_tolerance_m) const;
