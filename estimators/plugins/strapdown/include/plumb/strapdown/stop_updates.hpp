@@ -68,6 +68,8 @@ class StopUpdates {
   void magnetic_update(FilterState& filter, const FieldReference& field, Counters& counters);
   void tally_update(FilterState& filter, Counters& counters);
   void late_stop_end(FilterState& filter, double depth_tolerance_m) const;
+  // What the gyros' unestimated g-sensitivity adds to their bias at a stop after a turn by angle.
+  void gyro_g_bias_after_turn(FilterState& filter, double angle) const;
   void turned_since_last_stop(FilterState& filter) const;
   // A depth row came within the age of a held report: the feed measures the tool as it goes.
   bool depth_reporting(double t) const;
