@@ -26,10 +26,11 @@ constexpr double kTurningRadPerS = 0.2;
 // lies across the axis, and the attitude does turn that (an outside tactical rotary run at 10 Hz:
 // azimuth 0.23 -> 0.53 deg off without it).
 void keep_gravity_and_axial_force(StepIntegrals& in, double g) {
-  if (!(in.dt > 0) || in.spin_frame.col(2).norm() >= kTurningRadPerS * in.dt) return;
-  const Eigen::Vector3d axis = in.axis_n.normalized();
+  // (Squared norms: this runs at every epoch.)
+  const double turned = kTurningRadPerS * in.dt, axis2 = in.axis_n.squaredNorm();
+  if (!(in.dt > 0) || !(axis2 > 0) || in.spin_frame.col(2).squaredNorm() >= turned * turned) return;
   const Eigen::Vector3d rest(0.0, 0.0, -g * in.dt);
-  in.f_n = rest + axis * axis.dot(in.f_n - rest);
+  in.f_n = rest + in.axis_n * (in.axis_n.dot(in.f_n - rest) / axis2);
 }
 
 }  // namespace
