@@ -25,12 +25,15 @@ constexpr double kTurningRadPerS = 0.2;
 // A turning tool keeps the whole force: read at 10 Hz, what its readings do not resolve of the turn
 // lies across the axis, and the attitude does turn that (an outside tactical rotary run at 10 Hz:
 // azimuth 0.23 -> 0.53 deg off without it).
-void keep_gravity_and_axial_force(StepIntegrals& in, double g) {
+// Returns whether it did. (The axial-acceleration update, which reads the velocity's change through
+// that coupling, takes the same part of it: stop_updates.cpp.)
+bool keep_gravity_and_axial_force(StepIntegrals& in, double g) {
   // (Squared norms: this runs at every epoch.)
   const double turned = kTurningRadPerS * in.dt, axis2 = in.axis_n.squaredNorm();
-  if (!(in.dt > 0) || !(axis2 > 0) || in.spin_frame.col(2).squaredNorm() >= turned * turned) return;
+  if (!(in.dt > 0) || !(axis2 > 0) || in.spin_frame.col(2).squaredNorm() >= turned * turned) return false;
   const Eigen::Vector3d rest(0.0, 0.0, -g * in.dt);
   in.f_n = rest + in.axis_n * (in.axis_n.dot(in.f_n - rest) / axis2);
+  return true;
 }
 
 }  // namespace
@@ -139,8 +142,9 @@ void FilterState::step(const InputReading& prev, const InputReading& in, const I
 
 FilterState::Prediction FilterState::predict(const ProcessNoise& noise, const UnseenMotionNoise& unseen) {
   mech_.finish(x_, &integrals_);
-  if (drilling_tool_) keep_gravity_and_axial_force(integrals_, g_);
+  const bool left_out = drilling_tool_ && keep_gravity_and_axial_force(integrals_, g_);
   Prediction p{ErrorStateFilter::transition(integrals_, mech_.earth_rate()), integrals_.dt, noise};
+  p.across_axis_force_left_out = left_out;
   kf_.predict(p.phi, p.dt, noise);
   if (integrals_.unresolved_dv2 > 0) {
     // What the readings could not resolve of a turning tool's vibration: across its axis, half in

@@ -90,15 +90,15 @@ Measurement<2> lateral_velocity(const NavState& x, double sd_mps, bool drilling_
   return m;
 }
 
-Measurement<1> axial_acceleration(const Eigen::Vector3d& axis, const Eigen::Vector3d& dv, const StateMatrix& phi,
-                                  double dt, double sd) {
+Measurement<1> axial_acceleration(const Eigen::Vector3d& axis, const Eigen::Vector3d& dv,
+                                  const Eigen::Vector3d& dv_turned, const StateMatrix& phi, double dt, double sd) {
   Measurement<1> m;
   m.r[0] = axis.dot(dv) / dt;
   m.h = axis.transpose() * phi.middleRows<3>(kVel) / dt;
   m.h.middleCols<3>(kVel) -= axis.transpose() / dt;
   // The axis itself is the estimate's: an attitude error turns it against the epoch's mean
   // acceleration (vibration, whirl), as in lateral_velocity.
-  m.h.middleCols<3>(kAtt) += axis.transpose() * skew(Eigen::Vector3d(dv / dt));
+  m.h.middleCols<3>(kAtt) += axis.transpose() * skew(Eigen::Vector3d(dv_turned / dt));
   m.noise(0, 0) = sd * sd;
   return m;
 }

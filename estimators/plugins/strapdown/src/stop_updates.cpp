@@ -238,7 +238,10 @@ void StopUpdates::axial_acceleration_update(FilterState& filter, const FilterSta
   const double dt = prediction.dt, vrw = filter.noise().accel_vrw;
   const double sd = std::sqrt(config_.axial_accel_sd * config_.axial_accel_sd / dt + vrw * vrw / dt);
   const Eigen::Vector3d axis = filter.state().q.toRotationMatrix().col(2);
-  filter.update(axial_acceleration(axis, filter.state().v - velocity_after_updates_, prediction.phi, dt, sd));
+  const Eigen::Vector3d dv = filter.state().v - velocity_after_updates_;
+  const Eigen::Vector3d dv_turned =
+      prediction.across_axis_force_left_out ? Eigen::Vector3d(axis * axis.dot(dv)) : dv;
+  filter.update(axial_acceleration(axis, dv, dv_turned, prediction.phi, dt, sd));
   count(counters, "axial_acceleration_updates");
 }
 

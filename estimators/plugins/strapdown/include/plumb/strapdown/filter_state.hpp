@@ -62,6 +62,9 @@ class FilterState {
     Eigen::Vector4d displacement_noise = Eigen::Vector4d::Zero();
     // u u' added to the attitude and velocity block: a turn clipped readings or a gap could hide.
     Eigen::Matrix<double, 6, 1> turn_noise = Eigen::Matrix<double, 6, 1>::Zero();
+    // phi's coupling of the velocity to the attitude took gravity and the force along the axis
+    // alone (a drilling tool that did not turn: filter_state.cpp).
+    bool across_axis_force_left_out = false;
   };
   Prediction predict(const ProcessNoise& noise, const UnseenMotionNoise& unseen = {});
   // The minor steps go on from the (corrected) state.

@@ -53,8 +53,10 @@ Measurement<2> lateral_velocity(const NavState& x, double sd_mps, bool drilling_
 // epoch (no filter correction in it); phi: the epoch's transition, whose velocity rows less the
 // identity are how the error state made dv wrong; axis: the tool axis in the navigation frame.
 // sd: of the epoch's mean acceleration along the axis (the string's and the accelerometers' noise).
-Measurement<1> axial_acceleration(const Eigen::Vector3d& axis, const Eigen::Vector3d& dv, const StateMatrix& phi,
-                                  double dt, double sd);
+// dv_turned: the part of dv an attitude error turns against the axis, as phi took it (dv, or its
+// part along the axis where phi left the force across the axis out: filter_state.cpp).
+Measurement<1> axial_acceleration(const Eigen::Vector3d& axis, const Eigen::Vector3d& dv,
+                                  const Eigen::Vector3d& dv_turned, const StateMatrix& phi, double dt, double sd);
 
 // Measured depth: the distance travelled along the tool axis since alignment.
 Measurement<1> along_hole_distance(const NavState& x, double measured_distance_m, double sd_m);
