@@ -64,11 +64,13 @@ ClearanceWatch::ClearanceWatch(const components::ClearanceCliOptions& options, c
 std::optional<ClearanceWatch::Pair> ClearanceWatch::sidetrack_pair(Offset& offset, const survey::SurveyRow& row,
                                                                    const survey::WellPoint& station) {
   if (!offset.view) return std::nullopt;
-  // As a station list holds it: depth and angles in the survey's north, nothing measured besides.
+  // As a station list holds it: depth and angles in the survey's north, nothing measured besides but
+  // the station's time (a gyro model's continuous terms time the drift by it).
   survey::Station listed;
   listed.md_m = row.station.md_m;
   listed.inclination_deg = row.station.inclination_deg;
   listed.magnetic_azimuth_deg = row.azimuth_deg;
+  listed.t_s = row.station.t_s;
   try {
     const auto seen = offset.view->add(listed, station);
     if (!seen) return std::nullopt;  // above the kick-off: the wells' common hole

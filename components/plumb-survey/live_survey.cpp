@@ -58,12 +58,13 @@ survey::StationListModel offset_model(const LiveOptions& o, const survey::Survey
 }
 
 // The survey's own stations, surveyed again from a sidetrack's kick-off: through the survey's ISCWSA
-// error model and reference field (none without an ISCWSA model: plumb's own propagation is not a
-// tool code).
+// tool code (the navigator's own gyro model too) and reference field (none without an ISCWSA model:
+// plumb's own propagation is not a tool code).
 std::optional<survey::StationListModel> reference_model(const LiveOptions& o, const survey::SurveyOptions& s) {
   if (!s.tool_code) return std::nullopt;
   survey::StationListModel m = offset_model(o, s);
-  m.error_model = o.survey.error_model == "auto" ? "MWD" : o.survey.error_model;
+  m.error_model = s.tool_code->name;
+  m.tool_code = s.tool_code;
   m.first_station_surveyed = true;
   return m;
 }
@@ -361,12 +362,13 @@ int run_live_survey(const LiveOptions& o) {
   clock.drift_ppm = o.depth_clock_drift_ppm;
   check_depth_clock_options(clock);  // before joining the network: a usage error is said at once
   components::check_clearance_options(o.clearance);
-  if (!o.clearance.sidetracks.empty())
+  const bool navigator_model = o.survey.error_model == "auto" && o.estimator == components::kNavigatorPlugin;
+  if (!o.clearance.sidetracks.empty() && !navigator_model)
     ClearanceWatch::check_sidetracks(o.clearance, components::make_survey_options(o.survey, o.estimator).tool_code.has_value());
   // The navigator's own gyro model needs its parameters: asked of its host before the survey
   // starts (the file's stations are resumed through the same model).
   NavigatorAnswer navigator;
-  if (o.survey.error_model == "auto" && o.estimator == components::kNavigatorPlugin) {
+  if (navigator_model) {
     components::install_stop_handler();
     const std::string host = o.estimator_host.empty() ? components::host_name() : o.estimator_host;
     char wait[32];
@@ -374,6 +376,12 @@ int run_live_survey(const LiveOptions& o) {
     note("error model: asking estimator host '" + host + "' for the " + o.estimator + " navigator's parameters (up to " +
          wait + " s)");
     navigator = ask_navigator_parameters(o.transport, host, o.estimator, o.estimator_wait_s);
+    // Plumb's own terms are no tool code to survey the well drilled again through from a kick-off.
+    if (!o.clearance.sidetracks.empty() && !navigator.parameters)
+      throw std::invalid_argument("--sidetrack with --error-model auto surveys the well drilled again through the "
+                                  "navigator's gyro model, which needs its parameters: " + navigator.why +
+                                  " (--estimator-host names the host that runs the navigator; --error-model "
+                                  "GYRO:tactical, GYRO:mems or a tool code file names a model)");
   }
   LiveSurvey survey(o, navigator);
   return survey.run();

@@ -31,13 +31,14 @@ NavigatorAnswer ask_navigator_parameters(const components::TransportOptions& tra
     request.plugin = plugin;
     const std::optional<topics::ComponentReply> reply = client.ask(request);
     if (!reply) {
-      answer.said = "error model: " + client.no_answer(host) + "; " + fixes();
+      answer.why = client.no_answer(host);
+      answer.said = "error model: " + answer.why + "; " + fixes();
       answer.status = status_line(host, "did not answer");
       return answer;
     }
     if (reply->result != topics::COMPONENT_DONE) {
-      answer.said = "error model: estimator host '" + host + "' refused its " + plugin + " parameters (" +
-                    reply->message + "); " + fixes();
+      answer.why = "estimator host '" + host + "' refused its " + plugin + " parameters (" + reply->message + ")";
+      answer.said = "error model: " + answer.why + "; " + fixes();
       answer.status = status_line(host, "refused");
       return answer;
     }
@@ -49,7 +50,8 @@ NavigatorAnswer ask_navigator_parameters(const components::TransportOptions& tra
          << reply->rows.size() << " parameters)";
     answer.said = said.str();
   } catch (const std::exception& e) {
-    answer.said = std::string("error model: cannot ask estimator host '") + host + "': " + e.what() + "; " + fixes();
+    answer.why = "cannot ask estimator host '" + host + "': " + e.what();
+    answer.said = "error model: " + answer.why + "; " + fixes();
     answer.status = status_line(host, "cannot be asked");
   }
   return answer;

@@ -14,6 +14,7 @@ namespace plumb::survey_component {
 struct NavigatorAnswer {
   std::optional<survey::iscwsa::NavigatorParameters> parameters;  // none: no answer, or refused
   std::string said;    // one line: where they came from, or why there are none and what fixes it
+  std::string why;     // without them: why there are none, alone
   std::string status;  // without them: the same within plumb/status's 127 characters, the options first
 };
 

@@ -8,6 +8,9 @@
 # Then `plumb survey` offline on the same run's sensor CSV with the same --param: the same model
 # name, and at each station the same covariance. And against the simulator's truth: every station's
 # position error within 3 sigma of the model, and the RMS of error/sigma over the stations said.
+# A third plumb-survey, in true north with a sidetrack that kicks off the well at MD 3.75 m, surveys
+# the well drilled again from there through the navigator's gyro model; without the navigator's
+# parameters a sidetrack is refused, saying why.
 # usage: survey_navigator_model.sh BIN_DIR S V DOMAIN
 set -euo pipefail
 bin=$1 sim_t=$2 survey_t=$3
@@ -32,7 +35,31 @@ pids+=($live)
 "$bin/plumb-survey" "${survey_args[@]}" --file "$work/fallback.csv" --estimator-host "nobody-$PLUMB_DOMAIN_ID" \
   --estimator-wait 2 > "$work/fallback.out" 2> "$work/fallback.err" &
 pids+=($!)
-for log in live fallback; do
+python3 - "$work/sidetrack-1.csv" <<'PY'
+import math, sys
+kick_off, i, a = 3.75, math.radians(45), math.radians(120)
+north, east, tvd = (kick_off * math.sin(i) * math.cos(a), kick_off * math.sin(i) * math.sin(a), kick_off * math.cos(i))
+with open(sys.argv[1], "w") as f:
+    f.write("md_m,inclination_deg,azimuth_deg,north_m,east_m,tvd_m\n")
+    f.write(f"{kick_off},45,120,{north:.6f},{east:.6f},{tvd:.6f}\n")
+    for md in (4.25, 5, 6, 7, 8, 9, 10, 11, 12, 14):
+        f.write(f"{md},80,200,,,\n")
+PY
+sidetrack_args=(--reference true --declination 0 --sidetrack "$work/sidetrack-1.csv" --reference-radius 0.1 --offset-radius 0.1)
+"$bin/plumb-survey" "${survey_args[@]}" "${sidetrack_args[@]}" --file "$work/sidetrack.csv" --estimator-host "$host" \
+  --count 7 --timeout 150 > "$work/sidetrack.out" 2> "$work/sidetrack.err" &
+sidetrack=$!
+pids+=($sidetrack)
+# (After its line saying whom it asks: a usage error, exit 2, once the wait is over.)
+rc=0
+"$bin/plumb-survey" "${survey_args[@]}" "${sidetrack_args[@]}" --file "$work/refused.csv" \
+  --estimator-host "nobody-$PLUMB_DOMAIN_ID" --estimator-wait 1 > /dev/null 2> "$work/refused.err" || rc=$?
+if [ $rc -eq 2 ] && tail -1 "$work/refused.err" | grep -q "^plumb-survey: --sidetrack with --error-model auto surveys the well drilled again through the navigator's gyro model, which needs its parameters: no estimator host named 'nobody-$PLUMB_DOMAIN_ID' answered.*(--estimator-host names"; then
+  pass "a sidetrack without the navigator's parameters: refused, saying why ($(tail -1 "$work/refused.err"))"
+else
+  fail "a sidetrack without the navigator's parameters: exit $rc, $(cat "$work/refused.err")"
+fi
+for log in live fallback sidetrack; do
   wait_for "$work/$log.err" "attitude writer matched" 60 || { echo "$log plumb-survey never matched the estimator:"; cat "$work/$log.err" "$work/estimator.out"; exit 1; }
 done
 "$bin/plumb-sim" --scenario drilling-survey --transport "$sim_t" --rate x20 --reliable --wait-subscribers 20 \
@@ -64,6 +91,13 @@ else
 fi
 
 wait "$live" || { echo "live survey failed:"; cat "$work/live.err" "$work/sim.out"; exit 1; }
+wait "$sidetrack" || { echo "survey with the sidetrack failed:"; cat "$work/sidetrack.err"; exit 1; }
+if grep -q "a sidetrack of the well drilled from MD 3.75 m: scanned below it, both wells' uncertainty from there (the well surveyed again through GYRO:navigator (tactical" "$work/sidetrack.err" &&
+   [ "$(grep -c "^[0-9]" "$work/sidetrack.csv")" -eq 7 ] && grep -q "clearance .* at MD .*against sidetrack-1" "$work/sidetrack.err"; then
+  pass "a sidetrack, surveyed again through the navigator's gyro model: seven stations, the clearance below the kick-off"
+else
+  fail "sidetrack with the navigator's model: $(grep -i "sidetrack\|clearance\|error model" "$work/sidetrack.err")"
+fi
 wait "$sim" || { echo "plumb-sim failed:"; cat "$work/sim.out"; exit 1; }
 "$bin/plumb-sim" --scenario drilling-survey --csv "$work/run" > /dev/null
 "$bin/plumb" survey --input "$work/run/sensor.csv" --estimator strapdown "${navigator[@]}" "${ref[@]}" \

@@ -121,7 +121,7 @@ SurveyOptions station_list_options(const StationListModel& model, const Eigen::V
   o.field.total_b_uT = model.total_b_uT;
   o.field.dip_deg = model.dip_deg;
   o.checks = {false, false, false};
-  o.tool_code = clearance_tool_code(model.error_model);
+  o.tool_code = model.tool_code ? *model.tool_code : clearance_tool_code(model.error_model);
   o.latitude_deg = model.latitude_deg;
   o.first_station_surveyed = model.first_station_surveyed;
   o.tie_in = tie_in;
@@ -199,7 +199,8 @@ ClearanceWellFile clearance_well_below(const std::vector<Station>& stations, con
 SidetrackView::SidetrackView(double kick_off_md_m, StationListModel model, std::string where)
     : kick_off_md_m_(kick_off_md_m), model_(std::move(model)), where_(std::move(where)) {
   model_.first_station_surveyed = true;  // the kick-off is the well's first station surveyed
-  clearance_tool_code(model_.error_model);  // a tool code that cannot be read is said now, not at the kick-off
+  // A tool code that cannot be read is said now, not at the kick-off.
+  if (!model_.tool_code) clearance_tool_code(model_.error_model);
 }
 
 std::optional<WellPoint> SidetrackView::add(const Station& station, const WellPoint& course_point) {

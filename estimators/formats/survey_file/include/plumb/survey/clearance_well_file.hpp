@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "plumb/survey/clearance.hpp"
+#include "plumb/survey/iscwsa.hpp"
 
 namespace plumb::survey {
 
@@ -18,6 +19,8 @@ namespace plumb::survey {
 // the reference field the model weighs.
 struct StationListModel {
   std::string error_model = "MWD";
+  // A tool code built rather than named (the navigator's own gyro model): used instead of error_model.
+  std::optional<iscwsa::ToolCode> tool_code;
   double gravity_mps2 = kStandardGravity, total_b_uT = 50, dip_deg = 60;
   double latitude_deg = std::numeric_limits<double>::quiet_NaN();
   bool first_station_surveyed = true;  // a well surveyed from its first station (docs/surveys.md)
