@@ -35,16 +35,7 @@ pids+=($live)
 "$bin/plumb-survey" "${survey_args[@]}" --file "$work/fallback.csv" --estimator-host "nobody-$PLUMB_DOMAIN_ID" \
   --estimator-wait 2 > "$work/fallback.out" 2> "$work/fallback.err" &
 pids+=($!)
-python3 - "$work/sidetrack-1.csv" <<'PY'
-import math, sys
-kick_off, i, a = 3.75, math.radians(45), math.radians(120)
-north, east, tvd = (kick_off * math.sin(i) * math.cos(a), kick_off * math.sin(i) * math.sin(a), kick_off * math.cos(i))
-with open(sys.argv[1], "w") as f:
-    f.write("md_m,inclination_deg,azimuth_deg,north_m,east_m,tvd_m\n")
-    f.write(f"{kick_off},45,120,{north:.6f},{east:.6f},{tvd:.6f}\n")
-    for md in (4.25, 5, 6, 7, 8, 9, 10, 11, 12, 14):
-        f.write(f"{md},80,200,,,\n")
-PY
+python3 "$here/write_sidetrack.py" "$work/sidetrack-1.csv"
 sidetrack_args=(--reference true --declination 0 --sidetrack "$work/sidetrack-1.csv" --reference-radius 0.1 --offset-radius 0.1)
 "$bin/plumb-survey" "${survey_args[@]}" "${sidetrack_args[@]}" --file "$work/sidetrack.csv" --estimator-host "$host" \
   --count 7 --timeout 150 > "$work/sidetrack.out" 2> "$work/sidetrack.err" &

@@ -19,16 +19,7 @@ start_work_with_programs
 tool=drilling-survey
 
 # The sidetrack: a station list placed by its first row, the point of the planned path at 3.75 m.
-python3 - "$work/sidetrack-1.csv" <<'PY'
-import math, sys
-kick_off, i, a = 3.75, math.radians(45), math.radians(120)
-north, east, tvd = (kick_off * math.sin(i) * math.cos(a), kick_off * math.sin(i) * math.sin(a), kick_off * math.cos(i))
-with open(sys.argv[1], "w") as f:
-    f.write("md_m,inclination_deg,azimuth_deg,north_m,east_m,tvd_m\n")
-    f.write(f"{kick_off},45,120,{north:.6f},{east:.6f},{tvd:.6f}\n")
-    for md in (4.25, 5, 6, 7, 8, 9, 10, 11, 12, 14):
-        f.write(f"{md},80,200,,,\n")
-PY
+python3 "$here/write_sidetrack.py" "$work/sidetrack-1.csv"
 clearance_args=(--sidetrack "$work/sidetrack-1.csv" --reference-radius 0.1 --offset-radius 0.1)
 model_args=(--error-model MWD --gravity 9.80665 --total-field 50 --dip 60)
 survey_args=(--transport "$survey_t" --tool-id "$tool" --file "$work/survey.csv" --plugin static --reference true
