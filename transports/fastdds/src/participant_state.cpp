@@ -4,6 +4,9 @@
 #include <fastdds/rtps/builtin/data/ReaderProxyData.h>
 #include <fastdds/rtps/builtin/data/WriterProxyData.h>
 
+#include <chrono>
+#include <thread>
+
 #include "qos.hpp"
 #include "type_support.hpp"
 
@@ -54,7 +57,7 @@ std::vector<DiscoveredTopic> DiscoveryMap::topics() const {
   return result;
 }
 
-ParticipantState::ParticipantState(const ParticipantOptions& options) {
+ParticipantState::ParticipantState(const ParticipantOptions& options) : secured_(!options.security.empty()) {
   const dds::DomainParticipantQos qos = participant_qos(options);
   auto* factory = dds::DomainParticipantFactory::get_instance();
   // Only endpoint discovery is of interest; participant-level callbacks stay off.
@@ -76,6 +79,14 @@ ParticipantState::~ParticipantState() {
   // Writers and readers are gone (each holds this state); what remains are the topics.
   participant_->set_listener(nullptr);
   participant_->delete_contained_entities();
+  // A secured participant's farewell goes out on plain discovery, which Cyclone DDS refuses for an
+  // authenticated peer ("SPDP ST3 ... not allowed"): a Cyclone participant keeps this one until its
+  // lease ends, repeating what this one never acknowledged, its key-exchange messages. Those repeats
+  // go to this participant's port, where the next plumb command of this host (same participant
+  // index) cannot decode them, drops the whole datagram with its own messages in it, and is not
+  // answered until the lease ends (30 s; security_component_cyclonedds_fastdds, docs/security.md).
+  // Cyclone repeats them every 100 ms until acknowledged: staying 300 ms acknowledges them.
+  if (secured_) std::this_thread::sleep_for(std::chrono::milliseconds(300));
   dds::DomainParticipantFactory::get_instance()->delete_participant(participant_);
 }
 

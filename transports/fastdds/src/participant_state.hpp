@@ -64,6 +64,7 @@ class ParticipantState {
   eprosima::fastdds::dds::DomainParticipant* participant_ = nullptr;
   eprosima::fastdds::dds::Publisher* publisher_ = nullptr;
   eprosima::fastdds::dds::Subscriber* subscriber_ = nullptr;
+  bool secured_ = false;
 };
 
 }  // namespace plumb::transport::fastdds
