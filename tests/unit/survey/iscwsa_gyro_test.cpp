@@ -169,6 +169,28 @@ TEST(IscwsaGyro, ContinuousDriftAndRandomWalkGrowWithTheTimeRun) {
   }
 }
 
+// A z gyro that hands over to x-y gyros at 17 deg (SPE 90408's Model #4) does so inside the course
+// from 16 to 18 deg: each set drifts over its own part of it, as if a station stood at 17 deg.
+TEST(IscwsaGyro, AHandOverWithinACourseSharesItAtItsInclination) {
+  GyroRunning r = continuous_from_a_known_azimuth(60);
+  r.z_drift_from_inc_deg = 0, r.z_drift_to_inc_deg = 17;
+  r.xy_drift_from_inc_deg = 17, r.xy_drift_to_inc_deg = 150;
+  std::vector<StationGeometry> every_2_deg, and_at_17;
+  for (int k = 0; k <= 7; ++k) {
+    every_2_deg.push_back({30.0 * k, 10.0 + 2 * k, 50});
+    and_at_17.push_back(every_2_deg.back());
+    if (k == 3) and_at_17.push_back({105, 17, 50});  // a planar arc: the inclination even along it
+  }
+  for (const char* wf : {"GZ-GD", "GXY-GD", "GZ-GRW", "GXY-GRW"}) {
+    const bool walk = std::string(wf).ends_with("GRW");
+    const ToolCode tool = one_term(wf, 1.0, walk ? "deg/sqrt(hr)" : "deg/hr", Propagation::Systematic, r);
+    const double a = propagate(stations(every_2_deg), tool, Field{}).angle_variance.back()(1);
+    const double b = propagate(stations(and_at_17), tool, Field{}).angle_variance.back()(1);
+    EXPECT_GT(a, 0) << wf;
+    EXPECT_NEAR(a, b, 1e-12 * b) << wf;
+  }
+}
+
 TEST(IscwsaGyro, DriftMovesAHorizontalWellByTheIntegralOfItsAzimuthError) {
   // Due north at 90 deg, 1200 m at 100 m/h with 1 deg/h of drift: the azimuth error grows as
   // d s / v, and the well's end moves east by the integral, d L^2 / (2 v).

@@ -42,14 +42,16 @@ std::vector<Station> well1() {
   return s;
 }
 
-// Beyond the table's rounding to whole m^2, values of 200 m^2 and more within 0.1 %; Models #2 and
-// #4, which both run a z gyro, within 0.25 % (not explained: #2 at 2100 m NE -374.7 against -376, #4
-// NN 0.22 % high from 5100 m on). Values below 200 m^2 within 1.25 m^2 (1200 m EE 17.1 against 18,
-// the vertical section's misalignments; Model #1 at 2100 m EE 142.8 against 144).
+// Beyond the table's rounding to whole m^2, values of 200 m^2 and more within 0.1 %; Model #2 within
+// 0.25 % (not explained: at 2100 m NE -374.7 against -376), Model #4 within 0.12 % (5100 m NN 0.11 %
+// high; its z gyro hands over to x-y gyros inside a course, shared at 17 deg; counting the course
+// whole to the x-y gyros left it 0.22 % high, whole to the z gyro 0.13 % low at 8000 m). Values
+// below 200 m^2 within 1.25 m^2 (1200 m EE 17.1 against 18, the vertical section's misalignments;
+// Model #1 at 2100 m EE 142.8 against 144).
 bool within_what_plumb_reaches(int model, double ours, double published) {
   const double gap = std::abs(ours - published);
   if (std::abs(published) < 200) return gap <= 1.25;
-  const double relative = model == 2 || model == 4 ? 0.0025 : 0.001;
+  const double relative = model == 2 ? 0.0025 : model == 4 ? 0.0012 : 0.001;
   return gap <= 0.5 + relative * std::abs(published);
 }
 

@@ -1,5 +1,6 @@
 #include "iscwsa_gyro.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -68,6 +69,18 @@ double continuous_factor(const std::string& wf, double inc) {
 }
 
 bool within(double inc, double from_deg, double to_deg) { return inc >= from_deg * kRad && inc <= to_deg * kRad; }
+
+// The part of the course from inclination a to b that lies within [from, to] (inclination changing
+// evenly along the course, as on a minimum-curvature arc in one plane), and its mean inclination.
+struct CoursePart {
+  double share = 0, mean_inc = 0;
+};
+CoursePart part_within(double a, double b, double from_deg, double to_deg) {
+  if (a == b) return {within(b, from_deg, to_deg) ? 1.0 : 0.0, b};
+  const double lo = std::max(std::min(a, b), from_deg * kRad), hi = std::min(std::max(a, b), to_deg * kRad);
+  if (!(hi > lo)) return {};
+  return {(hi - lo) / std::abs(b - a), (lo + hi) / 2};
+}
 
 // Hours between two stations: the course over the running speed, or the stations' own times.
 double hours(const GyroStation& a, const GyroStation& b, std::size_t k, const GyroRunning& r) {
@@ -147,16 +160,22 @@ GyroEffect gyro_term(const std::vector<GyroStation>& s, const Term& term, double
   // the courses ending in the gyro set's own range where it has one (from the first station), else
   // in the run's (whose first course ends at its first station, after the initialisation). The
   // run's stations carry what has grown.
+  // A gyro set with its own range hands over to (or from) another within a course: each takes its
+  // part of the course. The run's own range counts whole courses: its first one begins at the
+  // initialisation, below the range.
   double from = r.continuous_start_inc_deg, to = r.continuous_end_inc_deg;
+  bool own_range = false;
   if (starts_with(term.weight_function, "GZ-") && std::isfinite(r.z_drift_from_inc_deg))
-    from = r.z_drift_from_inc_deg, to = r.z_drift_to_inc_deg;
+    from = r.z_drift_from_inc_deg, to = r.z_drift_to_inc_deg, own_range = true;
   if (starts_with(term.weight_function, "GXY-") && std::isfinite(r.xy_drift_from_inc_deg))
-    from = r.xy_drift_from_inc_deg, to = r.xy_drift_to_inc_deg;
+    from = r.xy_drift_from_inc_deg, to = r.xy_drift_to_inc_deg, own_range = true;
   double accumulated = 0;
   for (std::size_t k = 1; k < n; ++k) {
-    const bool grows = r.continuous && within(s[k].inc, from, to);
-    const double f = continuous_factor(term.weight_function, (s[k].inc + s[k - 1].inc) / 2);
-    const double t = grows ? hours(s[k - 1], s[k], k, r) : 0.0;
+    const double mean_inc = (s[k].inc + s[k - 1].inc) / 2;
+    const CoursePart part = own_range ? part_within(s[k - 1].inc, s[k].inc, from, to)
+                                      : CoursePart{within(s[k].inc, from, to) ? 1.0 : 0.0, mean_inc};
+    const double f = continuous_factor(term.weight_function, part.mean_inc);
+    const double t = r.continuous && part.share > 0 ? part.share * hours(s[k - 1], s[k], k, r) : 0.0;
     if (t > 0)
       accumulated = kind == GyroKind::Drift ? accumulated + t * f : std::sqrt(accumulated * accumulated + t * f * f);
     if (!std::isfinite(accumulated))

@@ -53,10 +53,11 @@ struct GyroRunning {
   // The share of a station's gyro noise left in an initialising gyrocompass, a longer measurement
   // (SPE 90408's examples: 0.5; OWSG GYRO-NS-CT 0.4082).
   double noise_reduction_factor = 1;
-  // Where each gyro set's drift and random walk grow: over every course ending within its
+  // Where each gyro set's drift and random walk grow: over the part of each course within its
   // inclination range, from the first station on (held beyond); NaN: the run's range. A z gyro
   // cannot see a turn toward horizontal, x-y gyros none toward vertical: SPE 90408's Model #4 runs
-  // its z gyro from the surface to 17 deg, then its x-y gyros to 150 deg.
+  // its z gyro from the surface to 17 deg, then its x-y gyros to 150 deg. A course across the
+  // hand-over is shared at its inclination, each set for its own part.
   double z_drift_from_inc_deg = std::numeric_limits<double>::quiet_NaN();
   double z_drift_to_inc_deg = std::numeric_limits<double>::quiet_NaN();
   double xy_drift_from_inc_deg = std::numeric_limits<double>::quiet_NaN();
