@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -41,6 +42,18 @@ void set_triple(const CLI::App& app, const std::string& option, const std::strin
   if (given(app, option)) out = parse_triple(option, text);
 }
 
+std::string format_number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+// "platform 48.4; drilling and drilling-survey 50; walk 50": a default each scenario keeps.
+std::string per_scenario(double platform, double drilling, double walk) {
+  return "platform " + format_number(platform) + "; drilling and drilling-survey " + format_number(drilling) + "; walk " +
+         format_number(walk);
+}
+
 void require(bool ok, const std::string& message) {
   if (!ok) throw std::invalid_argument(message);
 }
@@ -69,13 +82,19 @@ void add_scenario_options(CLI::App& app, ScenarioOptions& o) {
       ->excludes(rpm);
   app.add_option("--g", o.g, "gravity, m/s^2")->capture_default_str();
   // (Each scenario keeps its own field and latitude unless given: a default shown here would be the
-  // platform's only, and a gyrocompass run told the wrong latitude looks degrees off.)
-  app.add_option("--field", o.field, "total magnetic field, uT (default: platform 48.4; drilling, drilling-survey and "
-                                     "walk 50)");
-  app.add_option("--dip", o.dip, "magnetic dip, deg, positive down (default: platform 45.5; drilling, "
-                                 "drilling-survey and walk 60)");
-  app.add_option("--latitude", o.latitude, "latitude for the earth rate the gyros see, deg (default: platform 45; "
-                                           "drilling, drilling-survey and walk 35)");
+  // platform's only, and a gyrocompass run told the wrong latitude looks degrees off. The defaults
+  // quoted are the scenarios' own, read from them.)
+  const sim::Scenario platform;
+  const sim::DrillingScenario drilling = sim::DrillingScenario::reference(sim::ImuGrade::perfect(), 100, 1);
+  const sim::WalkScenario walk = sim::WalkScenario::loop_25m();
+  app.add_option("--field", o.field,
+                 "total magnetic field, uT (default: " + per_scenario(platform.total_b, drilling.total_b, walk.total_b) + ")");
+  app.add_option("--dip", o.dip,
+                 "magnetic dip, deg, positive down (default: " + per_scenario(platform.dip_deg, drilling.dip_deg, walk.dip_deg) + ")");
+  // The platform takes the option's own value (o.latitude before parsing) whether given or not.
+  app.add_option("--latitude", o.latitude,
+                 "latitude for the earth rate the gyros see, deg (default: " +
+                     per_scenario(o.latitude, drilling.latitude_deg, walk.latitude_deg) + ")");
   app.add_option("--rate-hz", o.rate_hz, "sample rate, Hz (drilling: the IMU rate, default 100; walk: default 400)")->capture_default_str();
   auto* duration = app.add_option("--duration", o.duration_s, "record length, s")->capture_default_str();
   app.add_option("--count", o.count, "number of samples (instead of --duration)")->excludes(duration);
