@@ -100,6 +100,7 @@ TEST(StrapdownFamilies, RotaryWithBroadbandVibrationReadAtTenHertz) {
     s.vibration.lateral_rms = 9.80665 * (0.1 + 0.3 * unit(rng));
     s.vibration.frequency_hz = 24;
     s.vibration.band_hz = 32;
+    s.magnetometer.axial_bias_sd_uT = 0.3;  // drawn as stated
   };
   rotary.input = [](std::uint64_t, std::vector<Sample>& s, estimator::Parameters& p) {
     s = read_as_means(s, kPerReading);

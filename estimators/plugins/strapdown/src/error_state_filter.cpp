@@ -273,7 +273,8 @@ StateVector ErrorStateFilter::update(const Eigen::Matrix<double, M, 1>& r, const
   for (int t = 0; t < n_touched; ++t) s.noalias() += h.col(touched[t]) * pht.row(touched[t]);
   // M <= 3: the closed-form inverse of a small symmetric positive definite matrix.
   const Eigen::Matrix<double, M, M> s_inv = s.inverse();
-  const Eigen::Matrix<double, kStates, M> k = pht.lazyProduct(s_inv);
+  Eigen::Matrix<double, kStates, M> k = pht.lazyProduct(s_inv);
+  if (considered_ >= 0) k.row(considered_).setZero();
   if (nis != nullptr) *nis = r.dot(s_inv * r);
   // Joseph form (I-KH) P (I-KH)' + K R K', multiplied out: P - K(HP) - (K(HP))' + K S K' (the
   // same matrix for any gain K), at 25 x 25 x M products instead of 25 x 25 x 25 ones. With

@@ -44,6 +44,7 @@ void FilterState::reset(const NavigatorConfig& config) {
   clear_estimates();
   lever_model_ = false;
   kf_ = ErrorStateFilter();
+  if (!config.mag_axial_bias_learnt) kf_.consider(kMagAxial);
   noise_.gyro_arw = config.gyro_arw;
   noise_.accel_vrw = config.accel_vrw;
   noise_.gyro_bias_walk = config.gyro_bias_instability / std::sqrt(config.bias_time_s);

@@ -106,6 +106,7 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"dip_tol_deg", "0.3", "a stop's dip further than this from the reference skips its azimuth update (deg; widened by three times what the accelerometers' stated bias and triad errors lean the dip between two toolfaces)"},
       {"mag_heading_sd_deg", "0.05", "magnetic heading model error per stop (deg), beside the noise"},
       {"mag_axial_bias_uT", "0.3", "magnetization of the drill string along the tool axis, 1 sigma (uT): it turns the magnetic azimuth the same way at every stop; 0: not modelled"},
+      {"mag_axial_bias_learnt", "0", "1: estimate the string's magnetization from the run; 0: keep it at its stated sigma (a consider state). Only axis directions far apart tell it from the azimuth: within one hole direction an estimate learnt the gyros' drift instead (outside horizontal MEMS runs 1.35 -> 1.18 deg off)"},
       {"mag_update_s", "5", "field averaged this long per stop for the azimuth update (s)"},
       {"kf_rate_hz", "20", "filter epochs per second (covariance propagation, updates, smoother storage)"},
       {"zupt_sd_mps", "0.001", "velocity of a still tool, 1 sigma (m/s)"},
@@ -221,6 +222,7 @@ NavigatorConfig parse_parameters(const estimator::Parameters& given) {
   c.dip_tol = r.number("dip_tol_deg", 0, 90) * kDegToRad;
   c.mag_heading_sd = r.number("mag_heading_sd_deg", 0, 90) * kDegToRad;
   c.mag_axial_bias_sd = r.number("mag_axial_bias_uT", 0, 100);
+  c.mag_axial_bias_learnt = r.boolean("mag_axial_bias_learnt");
   c.mag_update_s = r.number("mag_update_s", 0, 3600);
   c.kf_rate_hz = r.number("kf_rate_hz", 0.01, 1e4);
   c.zupt_sd = r.number("zupt_sd_mps", 1e-9, 10);

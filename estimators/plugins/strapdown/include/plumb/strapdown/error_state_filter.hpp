@@ -71,6 +71,12 @@ struct ProcessNoise {
 class ErrorStateFilter {
  public:
   void reset(const StateMatrix& p0) { p_ = p0; }
+  // A state kept out of every update, as Schmidt's "consider" states are (-1: none): its estimate
+  // and its variance stay, while its covariance with the others follows each update (the Joseph
+  // form below holds for any gain, here the optimal one with that state's row set to zero). For a
+  // parameter no motion of the run tells apart from the others, which an estimate would learn only
+  // from the others' modelling errors (the string's magnetization: docs/navigator.md).
+  void consider(int state) { considered_ = state; }
   const StateMatrix& covariance() const { return p_; }
   StateMatrix& covariance() { return p_; }
 
@@ -122,6 +128,7 @@ class ErrorStateFilter {
   static int touched_states(const Eigen::Matrix<double, M, kStates>& h, std::array<int, kStates>& touched);
 
   StateMatrix p_ = StateMatrix::Identity();
+  int considered_ = -1;
 };
 
 // Process noise beyond the figures' added to a covariance: velocity (3 x 3), and u u' over the

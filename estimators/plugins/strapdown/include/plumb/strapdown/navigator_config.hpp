@@ -40,6 +40,7 @@ struct NavigatorConfig {
   double mag_heading_sd = 0.05 * 3.14159265358979323846 / 180.0;  // model error per still period
   double mag_update_s = 5;             // field averaged this long (or the whole period) per update
   double mag_axial_bias_sd = 0.3;      // drill-string magnetization along the tool axis, 1 sigma (uT)
+  bool mag_axial_bias_learnt = false;  // estimated from the run; false: a consider state (its sigma kept)
   // Sensor model (per axis).
   double gyro_arw = 0.05 * 3.14159265358979323846 / 180.0 / 60.0;   // rad/sqrt(s)
   double accel_vrw = 0.03 / 60.0;                                   // m/s/sqrt(s)
