@@ -106,7 +106,7 @@ std::vector<estimator::ParameterSpec> parameter_specs() {
       {"dip_tol_deg", "0.3", "a stop's dip further than this from the reference skips its azimuth update (deg; widened by three times what the accelerometers' stated bias and triad errors lean the dip between two toolfaces)"},
       {"mag_heading_sd_deg", "0.05", "magnetic heading model error per stop (deg), beside the noise"},
       {"mag_axial_bias_uT", "0.3", "magnetization of the drill string along the tool axis, 1 sigma (uT): it turns the magnetic azimuth the same way at every stop; 0: not modelled"},
-      {"mag_axial_bias_learnt", "0", "1: estimate the string's magnetization from the run; 0: keep it at its stated sigma (a consider state). Only axis directions far apart tell it from the azimuth: within one hole direction an estimate learnt the gyros' drift instead (outside horizontal MEMS runs 1.35 -> 1.18 deg off)"},
+      {"mag_axial_bias_learnt", "0", "1: estimate the string's magnetization from the run; 0: keep it at its stated sigma (a consider state). Only axis directions far apart tell it from the azimuth: within one hole direction an estimate learnt the gyros' drift instead (an outside horizontal MEMS run: 1.35 deg off learnt, 1.18 kept)"},
       {"mag_update_s", "5", "field averaged this long per stop for the azimuth update (s)"},
       {"kf_rate_hz", "20", "filter epochs per second (covariance propagation, updates, smoother storage)"},
       {"zupt_sd_mps", "0.001", "velocity of a still tool, 1 sigma (m/s)"},
