@@ -22,6 +22,7 @@ void OutputRows::reset(const NavigatorConfig& config) {
   row_stats_.clear();
   last_b_valid_ = false;
   smoother_.clear();
+  smoother_.consider(config.mag_axial_bias_learnt ? -1 : index::kMagAxial);
   pending_.clear();
 }
 

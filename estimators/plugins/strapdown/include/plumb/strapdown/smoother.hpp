@@ -34,6 +34,9 @@ struct SmoothedEpoch {
 class RtsSmoother {
  public:
   void clear() { epochs_.clear(); }
+  // A state the filter kept out of its updates (ErrorStateFilter::consider; -1: none): kept out of
+  // the backward pass too, its smoothed error zero at every epoch.
+  void consider(int state) { considered_ = state; }
   std::size_t size() const { return epochs_.size(); }
   // Epoch k: phi, dt and process noise of the prediction from epoch k-1 (ignored for the first),
   // the correction applied at k, the state and covariance after it.
@@ -62,6 +65,7 @@ class RtsSmoother {
   static StateMatrix predicted(const Epoch& next, const StateMatrix& phi, const StateMatrix& pk);
   SmoothedEpoch whole(const Epoch& e) const;
   std::vector<Epoch> epochs_;
+  int considered_ = -1;
 };
 
 template <class Visit>
@@ -81,7 +85,8 @@ void RtsSmoother::smooth(Visit&& visit) const {
     const StateMatrix phi = Eigen::Map<const StateMatrix>(next.phi);
     const StateMatrix pred = predicted(next, phi, pk);
     // G = P Phi' pred^-1, i.e. G' = pred^-1 Phi P (pred is symmetric positive definite).
-    const StateMatrix g = pred.ldlt().solve(phi * pk).transpose();
+    StateMatrix g = pred.ldlt().solve(phi * pk).transpose();
+    if (considered_ >= 0) g.row(considered_).setZero();
     const StateVector c = Eigen::Map<const StateVector>(next.correction);
     dx = g * (dx + c);
     ps = pk + g * (ps - pred) * g.transpose();
