@@ -1,7 +1,9 @@
 // Stillness detectors: short stances (foot-mounted or hand-carried tools) at 400 Hz and 1 kHz,
 // and the source's magnitude test against a turning tool.
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -136,6 +138,89 @@ TEST(Stillness, StopAfterABuildingSlideIsSeenWithinSeconds) {
   EXPECT_EQ(still_in_slide, 0u);
   ASSERT_GE(first_still, slide_end);
   EXPECT_LT(first_still - slide_end, 8.0);
+}
+
+// A rig's depth report: the true depth plus white noise, quantized to a tenth of a foot, once a
+// second and held on every reading until the next.
+struct RigDepth {
+  std::mt19937_64 rng{11};
+  std::normal_distribution<double> noise;
+  double held = 0, last_report = -1e9;
+  explicit RigDepth(double sd_m) : noise(0.0, sd_m) {}
+  double at(double t, double depth) {
+    if (t - last_report >= 1.0) {
+      held = std::round((depth + noise(rng)) / 0.03048) * 0.03048;
+      last_report = t;
+    }
+    return held;
+  }
+};
+
+// A still tool or one that slides at a steady rate: gravity and the sensors' noise alone. The
+// depth's noise stated as the rounding leaves it (at least 5 cm in 0.1 ft steps), the range limit
+// as the navigator sets it (8 sigma).
+struct DepthRun {
+  StillnessDetector detector;
+  std::mt19937_64 rng{5};
+  std::normal_distribution<double> n{0.0, 1.0};
+  RigDepth rig;
+  static StillnessConfig config(double stated_sd_m) {
+    StillnessConfig c = magnitude_config(0.002, 5e-5);
+    c.depth_sd_m = stated_sd_m;
+    c.depth_tol_m = 8 * stated_sd_m;
+    return c;
+  }
+  explicit DepthRun(double depth_sd_m) : detector(config(std::hypot(depth_sd_m, 0.03048 / std::sqrt(12.0)))), rig(depth_sd_m) {}
+  bool step(double t, double depth) {
+    StillnessInput in;
+    in.t = t;
+    in.f = Eigen::Vector3d(0, 0, -9.81) + 0.002 * Eigen::Vector3d(n(rng), n(rng), n(rng));
+    in.w_minus_expected = 5e-5 * Eigen::Vector3d(n(rng), n(rng), n(rng));
+    in.g = 9.81;
+    in.depth_m = rig.at(t, depth);
+    return detector.update(in).still;
+  }
+};
+
+// A slide at a steady rate moves neither the accelerometers nor the gyros, and each second's
+// depth by less than its noise: the mean test ends the still period after some seconds, and the
+// period must not start again while the depth goes on (the navigator held the velocity at zero
+// through a whole slide of an outside run read without sensor noise, and its azimuth missed the
+// slide's turn). The stop after it is seen once the recent reports' line is flat and slower than
+// the one before (a 5 cm/s slide under 2 cm of noise), or else once the whole window's line is
+// flat (3 cm/s under 4.4 cm, the outside run's: 10 s).
+TEST(Stillness, SteadySlideTheDepthSeesStaysMoving) {
+  for (const auto& [rop, depth_sd, stop_seen_within_s] : {std::tuple{0.03, 0.044, 12.0}, std::tuple{0.05, 0.02, 6.0}}) {
+    DepthRun run(depth_sd);
+    const double slide_start = 40, slide_end = 210;
+    std::size_t still_late_in_slide = 0, slide_samples = 0;
+    double first_still_after = -1;
+    for (double t = 0; t < 300; t += 0.01) {
+      const double depth = 100 + rop * std::clamp(t - slide_start, 0.0, slide_end - slide_start);
+      const bool still = run.step(t, depth);
+      if (t > slide_start + 30 && t < slide_end) {
+        ++slide_samples;
+        if (still) ++still_late_in_slide;
+      }
+      if (t > slide_end && still && first_still_after < 0) first_still_after = t;
+    }
+    EXPECT_EQ(still_late_in_slide, 0u) << rop << " m/s: of " << slide_samples << " samples after the slide's first 30 s";
+    ASSERT_GT(first_still_after, slide_end) << rop << " m/s";
+    EXPECT_LT(first_still_after - slide_end, stop_seen_within_s) << rop << " m/s";
+  }
+}
+
+// A floating rig's swell on the depth of a still tool (0.5 m at 10 s, beside the reports' noise)
+// is no slide. The depth's mean test ends a period now and then on such a swell (91 % of the time
+// still, with the trend as without it); the trend that follows must not keep it moving: its sigma
+// counts the reports' scatter about its line (with the stated noise alone, 80 %).
+TEST(Stillness, SwellOnTheDepthOfAStillToolIsNoSlide) {
+  DepthRun run(0.044);
+  std::size_t still_samples = 0, total = 0;
+  for (double t = 0; t < 300; t += 0.01, ++total) {
+    if (run.step(t, 100 + 0.5 * std::sin(2 * 3.14159265358979 * t / 10))) ++still_samples;
+  }
+  EXPECT_GT(static_cast<double>(still_samples), 0.88 * static_cast<double>(total)) << still_samples << " of " << total;
 }
 
 }  // namespace

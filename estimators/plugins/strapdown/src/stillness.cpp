@@ -23,6 +23,8 @@ void StillnessDetector::reset() {
   recent_reports_.clear();
   recent_sum_ = period_sum_ = period_n_ = 0;
   last_depth_.reset();
+  trend_.clear();
+  depth_moved_ = false;
 }
 
 void StillnessDetector::add_depth_report(double t, double depth) {
@@ -233,6 +235,11 @@ StillnessState StillnessDetector::update(const StillnessInput& in) {
     add_depth_report(in.t, d);
     depth_ok = range < config_.depth_tol_m && depth_means_steady(1.0);
     depth_ok_exit = range < config_.hysteresis * config_.depth_tol_m && depth_means_steady(config_.hysteresis);
+    trend_.add(in.t, d);
+  }
+  if (depth_moved_) {
+    depth_moved_ = trend_.moving(in.t, config_.depth_sd_m);
+    depth_ok = depth_ok && !depth_moved_;
   }
   const bool enough = window_.size() >= StillnessConfig::kMinWindowSamples;
   extra_accel_tol_ = in.extra_accel_tol;
@@ -276,6 +283,7 @@ StillnessState StillnessDetector::update(const StillnessInput& in) {
       return out;
     }
     out.ended = true;
+    depth_moved_ = !depth_ok_exit && trend_.moved_since(period_start_, config_.depth_sd_m);
     candidate_ = confirmed_ = false;
     return out;
   }

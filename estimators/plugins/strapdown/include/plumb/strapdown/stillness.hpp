@@ -18,7 +18,9 @@
 // sliding straight at constant speed is otherwise indistinguishable from a still one), and, when
 // its noise is known, the mean of the last depth_window_s within kDepthMeanSigmas of the noise of
 // the period's mean before it (2 cm of noise at 100 Hz hides a slow start from the range's 8 sigma,
-// 0.16 m, not from means: 0.013 m after 5 s).
+// 0.16 m, not from means: 0.013 m after 5 s). A period the depth ended while its own reports
+// show motion is followed by none until the depth's trend is flat (DepthTrend): a steady slide
+// passes the one-second tests again at once.
 // The period starts at the oldest sample of the first quiet window and is confirmed once it has
 // lasted min_still; once confirmed, it ends only when a test fails by `hysteresis` times its
 // threshold.
@@ -37,6 +39,7 @@
 
 #include <Eigen/Core>
 
+#include "plumb/strapdown/depth_trend.hpp"
 #include "plumb/strapdown/ring_queue.hpp"
 
 namespace plumb::strapdown {
@@ -174,6 +177,10 @@ class StillnessDetector {
   RingQueue<std::pair<double, double>> recent_reports_;
   double recent_sum_ = 0, period_sum_ = 0, period_n_ = 0;
   std::optional<double> last_depth_;
+  // Set when the depth ended a still period whose own reports show motion: the inertial tests may
+  // still pass (a steady slide), and a new period waits until the depth's trend is flat.
+  DepthTrend trend_;
+  bool depth_moved_ = false;
   bool candidate_ = false, confirmed_ = false;
   double period_start_ = 0;
   void extend_stretch(const StillnessInput& in);
