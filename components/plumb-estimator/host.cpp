@@ -17,6 +17,7 @@
 #include "component_service.hpp"
 #include "estimate_line.hpp"
 #include "lineup.hpp"
+#include "parameter_publication.hpp"
 
 #include "plumb/components/status_reporter.hpp"
 #include "plumb/estimator/loader.hpp"
@@ -72,8 +73,10 @@ class Host {
         publication_(*conn_.participant),
         input_(*conn_.participant, {o.input_topic, o.tool_id, o.reliable}),
         status_(*conn_.participant, "plumb-estimator"),
-        service_(*conn_.participant, o.name.empty() ? components::host_name() : o.name) {
+        service_(*conn_.participant, o.name.empty() ? components::host_name() : o.name),
+        parameters_(*conn_.participant, service_.name()) {
     status_.set_name(service_.name());  // plumb status shows it: two hosts on one computer are told apart
+    for (const auto& e : lineup_.entries()) parameters_.publish(lineup_, e.name);
     for (const auto& slot : first_runner_.slots()) publication_.add(slot.name, slot.estimator->info().uses_gyro);
     if (o.compare_truth) truth_ = std::make_unique<TruthLookup>(*conn_.participant, o.truth_topic);
     open_resume_record();
@@ -126,6 +129,7 @@ class Host {
   SensorSubscription input_;
   components::StatusReporter status_;
   ComponentService service_;
+  ParameterPublication parameters_;
   std::unique_ptr<TruthLookup> truth_;
   std::optional<ResumeFile> resume_;
   bool said_resume_failure_ = false;
@@ -221,6 +225,7 @@ topics::ComponentReply Host::handle(const topics::ComponentRequest& r) {
         runner.add(plugin, estimator::load_estimator(plugin));
         runner.reconfigure(plugin, parameters, publisher_for(tool));  // a new slot: nothing open to end
       });
+      parameters_.publish(lineup_, plugin);
       reply.message = "loaded " + plugin + ", publishing on " + transport::topic_names::attitude(plugin);
       if (lineup_.find(plugin)->info.uses_gyro && stream_has_gyro_ == false)
         reply.message += "; it needs gyros, and " + o_.input_topic + " carries none";
@@ -228,12 +233,14 @@ topics::ComponentReply Host::handle(const topics::ComponentRequest& r) {
       lineup_.unload(plugin);
       for_each_runner([&](const std::string& tool, estimator::Runner& runner) { runner.remove(plugin, publisher_for(tool)); });
       publication_.retire(plugin);
+      parameters_.unloaded(plugin);
       reply.message = "unloaded " + plugin + " (its open window published)";
     } else if (r.verb == "set") {
       const estimator::Parameters parameters = lineup_.set(plugin, r.name, r.value);
       for_each_runner([&](const std::string& tool, estimator::Runner& runner) {
         runner.reconfigure(plugin, parameters, publisher_for(tool));
       });
+      parameters_.publish(lineup_, plugin);
       reply.message = plugin + "." + r.name + " = " + r.value + " from the next window (the open one published)";
     } else if (r.verb == "get") {
       reply.rows.push_back(row_of(lineup_.get(plugin, r.name)));

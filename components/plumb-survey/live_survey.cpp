@@ -72,14 +72,16 @@ std::optional<survey::StationListModel> reference_model(const LiveOptions& o, co
 // One live survey: its topics, the stations it has (kept in the file), what it has heard.
 class LiveSurvey {
  public:
-  LiveSurvey(const LiveOptions& o, const NavigatorAnswer& navigator)
+  LiveSurvey(const LiveOptions& o, components::Connection conn, std::optional<NavigatorParameterWatch> watch,
+             const NavigatorAnswer& navigator)
       : o_(o),
         result_(components::make_survey_options(o.survey, o.estimator,
                                                 navigator.parameters ? &*navigator.parameters : nullptr)),
         error_model_said_(navigator.said),
         error_model_status_(navigator.status),
         store_(o.file, result_, note),
-        conn_(components::connect(o.transport, kProgram)),
+        conn_(std::move(conn)),
+        watch_(std::move(watch)),
         survey_topic_(transport::topic_names::survey(topic_safe(o.tool_id))),
         attitude_topic_(o.attitude_topic.empty() ? transport::topic_names::attitude(o.estimator) : o.attitude_topic),
         writer_(transport::make_writer<topics::SurveyStation>(*conn_.participant, survey_topic_,
@@ -118,6 +120,8 @@ class LiveSurvey {
     status_.publish(state(), all_counters(), status_message());
     while (!components::g_stop && !enough()) {
       say_what_it_waits_for();
+      if (watch_)
+        if (const auto changed = watch_->change()) note(*changed);
       if (o_.timeout_s > 0 && std::chrono::duration<double>(Clock::now() - t0_).count() > o_.timeout_s) {
         status_.publish("failed", all_counters(), "timed out");
         components::print_error(kProgram, "timed out with " + std::to_string(result_.rows().size()) + " of " +
@@ -199,7 +203,7 @@ class LiveSurvey {
   }
 
   // Degraded: stations refused, the newest station at the clearance alarm, or the navigator's error
-  // model replaced by plumb's own terms (its host did not answer).
+  // model replaced by plumb's own terms (its host wrote no parameters).
   std::string state() const {
     return refused_ > 0 || error_model_fallback() || clearance_.level() == survey::ClearanceLevel::Alarm ? "degraded"
                                                                                                         : "running";
@@ -329,6 +333,7 @@ class LiveSurvey {
   std::string error_model_said_, error_model_status_;
   SurveyStore store_;
   components::Connection conn_;
+  std::optional<NavigatorParameterWatch> watch_;  // the navigator's parameters as its host writes them (auto)
   std::string survey_topic_, attitude_topic_;
   transport::Writer<topics::SurveyStation> writer_;
   transport::Reader<topics::Attitude> attitude_;
@@ -365,17 +370,20 @@ int run_live_survey(const LiveOptions& o) {
   const bool navigator_model = o.survey.error_model == "auto" && o.estimator == components::kNavigatorPlugin;
   if (!o.clearance.sidetracks.empty() && !navigator_model)
     ClearanceWatch::check_sidetracks(o.clearance, components::make_survey_options(o.survey, o.estimator).tool_code.has_value());
-  // The navigator's own gyro model needs its parameters: asked of its host before the survey
+  // The navigator's own gyro model needs its parameters: read from its host before the survey
   // starts (the file's stations are resumed through the same model).
+  components::Connection conn = components::connect(o.transport, kProgram);
+  std::optional<NavigatorParameterWatch> watch;
   NavigatorAnswer navigator;
   if (navigator_model) {
     components::install_stop_handler();
     const std::string host = o.estimator_host.empty() ? components::host_name() : o.estimator_host;
     char wait[32];
     std::snprintf(wait, sizeof wait, "%g", o.estimator_wait_s);
-    note("error model: asking estimator host '" + host + "' for the " + o.estimator + " navigator's parameters (up to " +
+    note("error model: reading the " + o.estimator + " navigator's parameters from estimator host '" + host + "' (up to " +
          wait + " s)");
-    navigator = ask_navigator_parameters(o.transport, host, o.estimator, o.estimator_wait_s);
+    watch.emplace(conn, host, o.estimator);
+    navigator = watch->first(o.estimator_wait_s);
     // Plumb's own terms are no tool code to survey the well drilled again through from a kick-off.
     if (!o.clearance.sidetracks.empty() && !navigator.parameters)
       throw std::invalid_argument("--sidetrack with --error-model auto surveys the well drilled again through the "
@@ -383,7 +391,7 @@ int run_live_survey(const LiveOptions& o) {
                                   " (--estimator-host names the host that runs the navigator; --error-model "
                                   "GYRO:tactical, GYRO:mems or a tool code file names a model)");
   }
-  LiveSurvey survey(o, navigator);
+  LiveSurvey survey(o, std::move(conn), std::move(watch), navigator);
   return survey.run();
 }
 

@@ -19,9 +19,9 @@ int main(int argc, char** argv) {
   app.add_option("--attitude-topic", o.attitude_topic, "attitude topic to read instead of plumb/attitude/<plugin>");
   app.add_option("--estimator-host", o.estimator_host,
                  "the estimator host running the plugin (its plumb-estimator --name; default this computer's host "
-                 "name): --error-model auto on the strapdown navigator asks it for the navigator's parameters");
+                 "name): --error-model auto on the strapdown navigator reads the navigator's parameters it writes");
   app.add_option("--estimator-wait", o.estimator_wait_s,
-                 "seconds to wait at start for the estimator host's answer (then plumb's own terms, said)")
+                 "seconds to wait at start for the estimator host's parameters (then plumb's own terms, said)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   components::add_survey_options(app, o.survey);

@@ -96,6 +96,10 @@ template <class M> void print_yaml(std::ostream& os, const M& m, int indent = 0)
 template <class T> void parse_scalar(const std::string& text, T& out, const std::string& path) {
   if constexpr (std::is_same_v<T, std::string>) {
     out = text;
+  } else if constexpr (std::is_same_v<T, bool>) {
+    if (text != "true" && text != "false" && text != "1" && text != "0")
+      throw std::invalid_argument("field '" + path + "': '" + text + "' is not true, false, 1 or 0");
+    out = text == "true" || text == "1";
   } else if constexpr (std::is_floating_point_v<T>) {
     const auto v = parse_number(text);
     if (!v) throw std::invalid_argument("field '" + path + "': '" + text + "' is not a number");

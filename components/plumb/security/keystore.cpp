@@ -246,15 +246,17 @@ std::optional<Grant> default_grant(const std::string& name) {
   static const std::map<std::string, Grant> grants{
       {"plumb-sim", {{"plumb/sensor/*", "plumb/sim/truth", "plumb/depth", "plumb/status"}, {}}},
       {"plumb-bridge", {{"plumb/sensor/*", "plumb/status"}, {"plumb/sensor/*", "plumb/calibration"}}},
-      // plumb/component/*: answers plumb component and plumb param (an operator's requests).
+      // plumb/component/*: answers plumb component and plumb param (an operator's requests), and
+      // writes its plugins' parameters for those who read them.
       {"plumb-estimator",
-       {{"plumb/attitude/*", "plumb/navigation/*", "plumb/status", "plumb/component/reply"},
+       {{"plumb/attitude/*", "plumb/navigation/*", "plumb/status", "plumb/component/reply", "plumb/component/parameters/*"},
         {"plumb/sensor/*", "plumb/depth", "plumb/sim/truth", "plumb/calibration", "plumb/component/request"}}},
       {"plumb-calibrate", {{"plumb/calibration", "plumb/sensor/raw", "plumb/status"}, {"plumb/sensor/*"}}},
-      // The sensor topic: the depth clock's estimate matches the stops it sees with the depth's.
+      // The sensor topic: the depth clock's estimate matches the stops it sees with the depth's; the
+      // navigator's parameters: its gyro error model (--error-model auto).
       {"plumb-survey",
        {{"plumb/survey/*", "plumb/clearance", "plumb/status"},
-        {"plumb/attitude/*", "plumb/navigation/*", "plumb/depth", "plumb/sensor/*"}}},
+        {"plumb/attitude/*", "plumb/navigation/*", "plumb/depth", "plumb/sensor/*", "plumb/component/parameters/*"}}},
       {"plumb-wits", {{"plumb/depth", "plumb/status"}, {}}},
       // Its Foxglove server offers every plumb topic: it may read them all.
       {"plumb-display", {{"plumb/status"}, {"plumb/*"}}},

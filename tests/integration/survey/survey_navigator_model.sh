@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The navigator's own gyro model, live and offline. plumb-sim's stop-and-go drilling run
 # (transport S) -> plumb-estimator --plugin strapdown --name gyro-host-DOMAIN (S) -> plumb-survey
-# --plugin strapdown --error-model auto (transport V), which asks that host for the navigator's
-# parameters (the component protocol, as plumb param dump) and surveys with the ISCWSA gyro model of
-# its figures. Beside it, a second plumb-survey asks a host that is not there: it falls back to
+# --plugin strapdown --error-model auto (transport V), which reads the navigator's parameters as that
+# host writes them (plumb/component/parameters/HOST/strapdown) and surveys with the ISCWSA gyro model
+# of its figures. Beside it, a second plumb-survey reads a host that is not there: it falls back to
 # plumb's own terms and says so in its log and on plumb/status, naming the options that fix it.
 # Then `plumb survey` offline on the same run's sensor CSV with the same --param: the same model
 # name, and at each station the same covariance. And against the simulator's truth: every station's
@@ -41,11 +41,11 @@ sidetrack_args=(--reference true --declination 0 --sidetrack "$work/sidetrack-1.
   --count 7 --timeout 150 > "$work/sidetrack.out" 2> "$work/sidetrack.err" &
 sidetrack=$!
 pids+=($sidetrack)
-# (After its line saying whom it asks: a usage error, exit 2, once the wait is over.)
+# (After its line saying whom it reads: a usage error, exit 2, once the wait is over.)
 rc=0
 "$bin/plumb-survey" "${survey_args[@]}" "${sidetrack_args[@]}" --file "$work/refused.csv" \
   --estimator-host "nobody-$PLUMB_DOMAIN_ID" --estimator-wait 1 > /dev/null 2> "$work/refused.err" || rc=$?
-if [ $rc -eq 2 ] && tail -1 "$work/refused.err" | grep -q "^plumb-survey: --sidetrack with --error-model auto surveys the well drilled again through the navigator's gyro model, which needs its parameters: no estimator host named 'nobody-$PLUMB_DOMAIN_ID' answered.*(--estimator-host names"; then
+if [ $rc -eq 2 ] && tail -1 "$work/refused.err" | grep -q "^plumb-survey: --sidetrack with --error-model auto surveys the well drilled again through the navigator's gyro model, which needs its parameters: no estimator host named 'nobody-$PLUMB_DOMAIN_ID' wrote its strapdown parameters.*(--estimator-host names"; then
   pass "a sidetrack without the navigator's parameters: refused, saying why ($(tail -1 "$work/refused.err"))"
 else
   fail "a sidetrack without the navigator's parameters: exit $rc, $(cat "$work/refused.err")"
@@ -64,9 +64,9 @@ if grep -q "error model: the strapdown navigator's parameters from estimator hos
 else
   fail "live: no gyro model from the host: $(cat "$work/live.err")"
 fi
-if grep -q "no estimator host named 'nobody-$PLUMB_DOMAIN_ID' answered within 2 s.*plumb's own terms instead (--error-model GYRO:tactical.*--estimator-host" "$work/fallback.err" &&
+if grep -q "no estimator host named 'nobody-$PLUMB_DOMAIN_ID' wrote its strapdown parameters .* within 2 s.*plumb's own terms instead (--error-model GYRO:tactical.*--estimator-host" "$work/fallback.err" &&
    grep -q "error model plumb$" "$work/fallback.err"; then
-  pass "without an answer: plumb's own terms, said in the log with the options that fix it"
+  pass "without the host's parameters: plumb's own terms, said in the log with the options that fix it"
 else
   fail "fallback not said: $(cat "$work/fallback.err")"
 fi
@@ -75,8 +75,8 @@ fi
 # (|| true: echo exits 1 when fewer than 12 reports came within 30 s; what counts is whether the
 # fallback's report is among those that came, which the grep below checks.)
 "$bin/plumb" topic echo plumb/status --csv --count 12 --timeout 30 --transport "$survey_t" > "$work/status.txt" 2>&1 || true
-if grep -E "plumb-survey.*degraded.*error model plumb \(--estimator-host NAME or --error-model GYRO:tactical\): estimator host 'nobody-$PLUMB_DOMAIN_ID' did not answer" "$work/status.txt" > /dev/null; then
-  pass "without an answer: plumb/status degraded, saying why"
+if grep -E "plumb-survey.*degraded.*error model plumb \(--estimator-host NAME or --error-model GYRO:tactical\): estimator host 'nobody-$PLUMB_DOMAIN_ID' wrote no parameters" "$work/status.txt" > /dev/null; then
+  pass "without the host's parameters: plumb/status degraded, saying why"
 else
   fail "fallback not on plumb/status: $(cat "$work/status.txt")"
 fi

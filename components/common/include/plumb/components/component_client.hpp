@@ -1,7 +1,6 @@
 // The client side of plumb/component/request and plumb/component/reply, shared by the verbs of
-// `plumb component` and `plumb param` and by plumb-survey (which asks the navigator's host for its
-// parameters): a request to one estimator host, sent again until that host answers or the wait is
-// over (the host answers a repeat with its first reply and applies it once).
+// `plumb component` and `plumb param`: a request to one estimator host, sent again until that host
+// answers or the wait is over (the host answers a repeat with its first reply and applies it once).
 #pragma once
 
 #include <chrono>
