@@ -2,7 +2,7 @@
 
 #include <utility>
 
-#include "plumb/components/parameters_topic.hpp"
+#include "plumb/components/topic_safe.hpp"
 
 namespace plumb::estimator_component {
 

@@ -1,6 +1,5 @@
 #include "live_survey.hpp"
 
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -8,6 +7,7 @@
 
 #include "plumb/components/convert.hpp"
 #include "plumb/components/status_reporter.hpp"
+#include "plumb/components/topic_safe.hpp"
 #include "plumb/survey/detector_report.hpp"
 #include "plumb/transport/topic_names.hpp"
 #include "attitude_continuity.hpp"
@@ -31,13 +31,6 @@ void print_row(const survey::SurveyRow& r, const char* what) {
               r.point.north_m, r.point.east_m, r.point.tvd_m, r.point.dls_deg_per_30m, r.uncertainty.major_sd_m,
               r.uncertainty.minor_sd_m, r.qc.pass ? "pass" : "FAIL", r.qc.pass ? "" : ": ", r.qc.reason.c_str());
   std::fflush(stdout);
-}
-
-// A topic name from a tool id: DDS names take letters, digits, '_' and '/'.
-std::string topic_safe(std::string s) {
-  for (char& c : s)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') c = '_';
-  return s;
 }
 
 }  // namespace
@@ -82,7 +75,7 @@ class LiveSurvey {
         store_(o.file, result_, note),
         conn_(std::move(conn)),
         watch_(std::move(watch)),
-        survey_topic_(transport::topic_names::survey(topic_safe(o.tool_id))),
+        survey_topic_(transport::topic_names::survey(components::topic_safe(o.tool_id))),
         attitude_topic_(o.attitude_topic.empty() ? transport::topic_names::attitude(o.estimator) : o.attitude_topic),
         writer_(transport::make_writer<topics::SurveyStation>(*conn_.participant, survey_topic_,
                                                                transport::default_qos_for_topic(survey_topic_))),

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <utility>
 
-#include "plumb/components/parameters_topic.hpp"
+#include "plumb/components/topic_safe.hpp"
 
 namespace plumb::survey_component {
 namespace {
