@@ -212,13 +212,13 @@ void ErrorStateFilter::predict(const StateMatrix& phi, double dt, const ProcessN
   p_.diagonal() += half_q;
 }
 
-void add_noise(StateMatrix& p, const Eigen::Matrix3d& velocity, const Eigen::Vector4d& displacement,
-               const Eigen::Matrix<double, 6, 1>& turn) {
-  p.block<3, 3>(kVel, kVel) += velocity;
+void add_noise(StateMatrix& p, const UnseenMotionNoise& extra) {
+  p.block<3, 3>(kVel, kVel) += extra.velocity;
+  p.block<3, 3>(kAtt, kAtt) += extra.attitude;
   static_assert(kVel == kAtt + 3, "the turn's u spans the attitude and the velocity");
-  if (!turn.isZero(0.0)) p.block<6, 6>(kAtt, kAtt) += turn * turn.transpose();
-  if (displacement.isZero(0.0)) return;
-  const Eigen::Matrix4d add = displacement * displacement.transpose();
+  if (!extra.turn.isZero(0.0)) p.block<6, 6>(kAtt, kAtt) += extra.turn * extra.turn.transpose();
+  if (extra.displacement.isZero(0.0)) return;
+  const Eigen::Matrix4d add = extra.displacement * extra.displacement.transpose();
   p.block<3, 3>(kPos, kPos) += add.topLeftCorner<3, 3>();
   p.block<3, 1>(kPos, kDistance) += add.block<3, 1>(0, 3);
   p.block<1, 3>(kDistance, kPos) += add.block<1, 3>(3, 0);

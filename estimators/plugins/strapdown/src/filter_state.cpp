@@ -151,12 +151,13 @@ FilterState::Prediction FilterState::predict(const ProcessNoise& noise, const Un
     // What the readings could not resolve of a turning tool's vibration: across its axis, half in
     // each direction (the mechanization gathers it for a drilling tool).
     const Eigen::Vector3d axis = x_.q.toRotationMatrix().col(2);
-    p.velocity_noise = (0.5 * integrals_.unresolved_dv2) * (Eigen::Matrix3d::Identity() - axis * axis.transpose());
+    p.extra.velocity = (0.5 * integrals_.unresolved_dv2) * (Eigen::Matrix3d::Identity() - axis * axis.transpose());
   }
-  p.velocity_noise += unseen.velocity;
-  p.displacement_noise = unseen.displacement;
-  p.turn_noise = unseen.turn;
-  add_noise(kf_.covariance(), p.velocity_noise, p.displacement_noise, p.turn_noise);
+  p.extra.velocity += unseen.velocity;
+  p.extra.displacement = unseen.displacement;
+  p.extra.turn = unseen.turn;
+  p.extra.attitude = unseen.attitude;
+  add_noise(kf_.covariance(), p.extra);
   integrals_.clear();
   correction_.setZero();
   return p;

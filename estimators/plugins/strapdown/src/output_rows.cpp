@@ -168,14 +168,12 @@ void OutputRows::emit(double t, const RowContext& context, Counters& counters, s
 }
 
 void OutputRows::store_epoch(const FilterState& filter, const FilterState::Prediction& prediction) {
-  smoother_.store(prediction.phi, prediction.dt, prediction.noise, prediction.velocity_noise,
-                  prediction.displacement_noise, prediction.turn_noise, filter.correction(),
+  smoother_.store(prediction.phi, prediction.dt, prediction.noise, prediction.extra, filter.correction(),
                   filter.state(), filter.gyro_bias(), filter.accel_bias(), filter.covariance());
 }
 
 void OutputRows::store_alignment(const FilterState& filter) {
-  smoother_.store(StateMatrix::Identity(), 0.0, ProcessNoise{}, Eigen::Matrix3d::Zero(), Eigen::Vector4d::Zero(), Eigen::Matrix<double, 6, 1>::Zero(),
-                  filter.correction(),
+  smoother_.store(StateMatrix::Identity(), 0.0, ProcessNoise{}, UnseenMotionNoise{}, filter.correction(),
                   filter.state(), filter.gyro_bias(), filter.accel_bias(), filter.covariance());
 }
 

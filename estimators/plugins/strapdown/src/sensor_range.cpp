@@ -49,13 +49,17 @@ void SensorRange::seen(const InputReading& in) {
 void SensorRange::integrate(const InputReading& in, double dt, const Eigen::Matrix3d& c_bn, const char* spin_followed_by) {
   const bool spin_followed = spin_followed_by != nullptr;
   if ((in.clipped == 0 && !spin_followed) || !(dt > 0)) return;
-  const auto axes = [](unsigned bits) {
-    return Eigen::Vector3d((bits & 1u) ? 1.0 : 0.0, (bits & 2u) ? 1.0 : 0.0, (bits & 4u) ? 1.0 : 0.0);
+  // The clipped axes' columns of c_bn; the others zero.
+  const auto axes = [&c_bn](unsigned bits) {
+    Eigen::Matrix3d m = c_bn;
+    for (int i = 0; i < 3; ++i)
+      if ((bits & (1u << i)) == 0) m.col(i).setZero();
+    return m;
   };
   if ((in.clipped & 7u) != 0) {
     ++row_accel_;
     const double beyond = std::max(0.0, config_.accel_shock_max - (in.accel_bad ? 0.0 : config_.accel_range));
-    velocity_.noalias() += (kRmsOfUniformExcess * beyond * dt) * (c_bn * axes(in.clipped & 7u));
+    velocity_.noalias() += (kRmsOfUniformExcess * beyond * dt) * axes(in.clipped & 7u);
   }
   const unsigned gyro_axes = ((in.clipped >> 3) & 7u) & (spin_followed ? 3u : 7u);
   if (spin_followed) {
@@ -65,13 +69,13 @@ void SensorRange::integrate(const InputReading& in, double dt, const Eigen::Matr
   if (gyro_axes != 0) {
     ++row_gyro_;
     const double beyond = std::max(0.0, config_.gyro_rate_max - (in.gyro_bad ? 0.0 : config_.gyro_range));
-    attitude_.noalias() += (kRmsOfUniformExcess * beyond * dt) * (c_bn * axes(gyro_axes));
+    attitude_.noalias() += (kRmsOfUniformExcess * beyond * dt) * axes(gyro_axes);
   }
 }
 
 void SensorRange::add_to(UnseenMotionNoise& noise) {
   if (!velocity_.isZero(0.0)) noise.velocity += velocity_ * velocity_.transpose();
-  if (!attitude_.isZero(0.0)) noise.turn.head<3>() += attitude_;
+  if (!attitude_.isZero(0.0)) noise.attitude += attitude_ * attitude_.transpose();
   velocity_.setZero();
   attitude_.setZero();
 }

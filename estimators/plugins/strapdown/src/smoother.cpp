@@ -2,19 +2,34 @@
 
 namespace plumb::strapdown {
 
-void RtsSmoother::store(const StateMatrix& phi, double dt, const ProcessNoise& noise,
-                        const Eigen::Matrix3d& velocity_noise, const Eigen::Vector4d& displacement_noise,
-                        const Eigen::Matrix<double, 6, 1>& turn_noise,
+namespace {
+
+void pack_symmetric(const Eigen::Matrix3d& m, double* upper) {
+  for (int r = 0, j = 0; r < 3; ++r) {
+    for (int c = r; c < 3; ++c) upper[j++] = m(r, c);
+  }
+}
+
+Eigen::Matrix3d unpack_symmetric(const double* upper) {
+  Eigen::Matrix3d m;
+  for (int r = 0, j = 0; r < 3; ++r) {
+    for (int c = r; c < 3; ++c, ++j) m(r, c) = m(c, r) = upper[j];
+  }
+  return m;
+}
+
+}  // namespace
+
+void RtsSmoother::store(const StateMatrix& phi, double dt, const ProcessNoise& noise, const UnseenMotionNoise& extra,
                         const StateVector& correction, const NavState& state,
                         const Eigen::Vector3d& gyro_bias, const Eigen::Vector3d& accel_bias, const StateMatrix& p) {
   Epoch e;
   e.dt = dt;
   e.noise = noise;
-  for (int r = 0, j = 0; r < 3; ++r) {
-    for (int c = r; c < 3; ++c) e.velocity_noise[j++] = velocity_noise(r, c);
-  }
-  Eigen::Map<Eigen::Vector4d>(e.displacement_noise) = displacement_noise;
-  Eigen::Map<Eigen::Matrix<double, 6, 1>>(e.turn_noise) = turn_noise;
+  pack_symmetric(extra.velocity, e.velocity_noise);
+  pack_symmetric(extra.attitude, e.attitude_noise);
+  Eigen::Map<Eigen::Vector4d>(e.displacement_noise) = extra.displacement;
+  Eigen::Map<Eigen::Matrix<double, 6, 1>>(e.turn_noise) = extra.turn;
   std::size_t i = 0;
   for (int r = 0; r < kStates; ++r) {
     for (int c = r; c < kStates; ++c) e.p_upper[i++] = p(r, c);
@@ -46,12 +61,12 @@ StateMatrix RtsSmoother::covariance(const Epoch& e) const {
 
 StateMatrix RtsSmoother::predicted(const Epoch& next, const StateMatrix& phi, const StateMatrix& pk) {
   StateMatrix pred = ErrorStateFilter::predicted_covariance(phi, pk, next.dt, next.noise);
-  Eigen::Matrix3d velocity;
-  for (int r = 0, j = 0; r < 3; ++r) {
-    for (int c = r; c < 3; ++c, ++j) velocity(r, c) = velocity(c, r) = next.velocity_noise[j];
-  }
-  add_noise(pred, velocity, Eigen::Map<const Eigen::Vector4d>(next.displacement_noise),
-            Eigen::Map<const Eigen::Matrix<double, 6, 1>>(next.turn_noise));
+  UnseenMotionNoise extra;
+  extra.velocity = unpack_symmetric(next.velocity_noise);
+  extra.attitude = unpack_symmetric(next.attitude_noise);
+  extra.displacement = Eigen::Map<const Eigen::Vector4d>(next.displacement_noise);
+  extra.turn = Eigen::Map<const Eigen::Matrix<double, 6, 1>>(next.turn_noise);
+  add_noise(pred, extra);
   return pred;
 }
 

@@ -40,6 +40,7 @@
 #include <Eigen/LU>
 
 #include "plumb/strapdown/mechanization.hpp"
+#include "plumb/strapdown/unseen_motion_noise.hpp"
 
 namespace plumb::strapdown {
 
@@ -131,12 +132,8 @@ class ErrorStateFilter {
   int considered_ = -1;
 };
 
-// Process noise beyond the figures' added to a covariance: velocity (3 x 3), and u u' over the
-// position and the along-hole distance (u = displacement: a way the tool may have gone unseen), and
-// u u' over the attitude and velocity (u = turn: a turn clipped readings or a gap may hide, and the
-// velocity it tilted).
-void add_noise(StateMatrix& p, const Eigen::Matrix3d& velocity, const Eigen::Vector4d& displacement,
-               const Eigen::Matrix<double, 6, 1>& turn = Eigen::Matrix<double, 6, 1>::Zero());
+// Process noise beyond the figures' added to a covariance (unseen_motion_noise.hpp).
+void add_noise(StateMatrix& p, const UnseenMotionNoise& extra);
 
 // Applies an error estimate to the whole-value state (and the bias estimates).
 void feed_back(const StateVector& dx, NavState& state, Eigen::Vector3d& gyro_bias, Eigen::Vector3d& accel_bias,

@@ -55,13 +55,9 @@ class FilterState {
     StateMatrix phi;
     double dt = 0;
     ProcessNoise noise;  // the process noise the prediction used
-    // Added to the velocity block beyond that noise: the unresolved vibration of a turning tool and
-    // the speed a stop may hide (unseen_motion.hpp).
-    Eigen::Matrix3d velocity_noise = Eigen::Matrix3d::Zero();
-    // u u' added to the block of the position and the along-hole distance: the way a stop may hide.
-    Eigen::Vector4d displacement_noise = Eigen::Vector4d::Zero();
-    // u u' added to the attitude and velocity block: a turn clipped readings or a gap could hide.
-    Eigen::Matrix<double, 6, 1> turn_noise = Eigen::Matrix<double, 6, 1>::Zero();
+    // Added beyond that noise: what the readings could not show, and the unresolved vibration of
+    // a turning tool in its velocity.
+    UnseenMotionNoise extra = {};
     // phi's coupling of the velocity to the attitude took gravity and the force along the axis
     // alone (a drilling tool that did not turn: filter_state.cpp).
     bool across_axis_force_left_out = false;

@@ -25,7 +25,7 @@ class SensorRange {
   // could hide, gathered for the epoch. spin_followed_by: the sensors its axial rate was followed
   // from (clipped_spin.hpp, which says what that axis could hide), or none.
   void integrate(const InputReading& in, double dt, const Eigen::Matrix3d& c_bn, const char* spin_followed_by = nullptr);
-  // The epoch's extra noise: the gathered attitude and velocity, as u u' along their directions.
+  // The epoch's extra noise: the gathered attitude and velocity, each clipped axis its own unknown.
   void add_to(UnseenMotionNoise& noise);
   // What the row since the last one says (empty when nothing was clipped); row_done() starts anew.
   std::string row_warning() const;
@@ -34,9 +34,11 @@ class SensorRange {
 
  private:
   NavigatorConfig config_;
-  // Summed linearly within an epoch, whatever the side clipped: a slip's samples err the same way,
-  // and a shock that rebounds clips both sides by excesses that need not cancel.
-  Eigen::Vector3d attitude_ = Eigen::Vector3d::Zero(), velocity_ = Eigen::Vector3d::Zero();
+  // Column i: what tool axis i could hide in the epoch, NED. Summed linearly within the epoch,
+  // whatever the side clipped: a slip's samples err the same way, and a shock that rebounds clips
+  // both sides by excesses that need not cancel. Two axes clipped at once are two unknowns, not
+  // one turn about their diagonal.
+  Eigen::Matrix3d attitude_ = Eigen::Matrix3d::Zero(), velocity_ = Eigen::Matrix3d::Zero();
   std::uint64_t row_accel_ = 0, row_gyro_ = 0, row_followed_ = 0;
   const char* followed_by_ = "";
   bool accel_said_ = false, gyro_said_ = false;

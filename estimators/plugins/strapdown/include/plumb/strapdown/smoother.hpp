@@ -40,8 +40,8 @@ class RtsSmoother {
   std::size_t size() const { return epochs_.size(); }
   // Epoch k: phi, dt and process noise of the prediction from epoch k-1 (ignored for the first),
   // the correction applied at k, the state and covariance after it.
-  void store(const StateMatrix& phi, double dt, const ProcessNoise& noise, const Eigen::Matrix3d& velocity_noise,
-             const Eigen::Vector4d& displacement_noise, const Eigen::Matrix<double, 6, 1>& turn_noise, const StateVector& correction, const NavState& state, const Eigen::Vector3d& gyro_bias,
+  void store(const StateMatrix& phi, double dt, const ProcessNoise& noise, const UnseenMotionNoise& extra,
+             const StateVector& correction, const NavState& state, const Eigen::Vector3d& gyro_bias,
              const Eigen::Vector3d& accel_bias, const StateMatrix& p);
   // Runs the backward pass; calls visit(k, smoothed) from the last epoch to the first.
   template <class Visit>
@@ -55,6 +55,7 @@ class RtsSmoother {
     double velocity_noise[6];  // upper triangle
     double displacement_noise[4];
     double turn_noise[6];
+    double attitude_noise[6];  // upper triangle
     double p_upper[kStates * (kStates + 1) / 2];
     double phi[kStates * kStates];
     double correction[kStates];

@@ -14,19 +14,9 @@
 
 #include "plumb/strapdown/navigator_config.hpp"
 #include "plumb/strapdown/stillness.hpp"
+#include "plumb/strapdown/unseen_motion_noise.hpp"
 
 namespace plumb::strapdown {
-
-// The process noise of one filter epoch beyond the figures'.
-struct UnseenMotionNoise {
-  // Velocity along the tool axis (m^2/s^2 over the epoch, NED).
-  Eigen::Matrix3d velocity = Eigen::Matrix3d::Zero();
-  // The position and the along-hole distance together: u u' is added to their 4 x 4 block.
-  Eigen::Vector4d displacement = Eigen::Vector4d::Zero();
-  // The attitude (rad, NED) and the velocity it moved: u u' is added to their 6 x 6 block (a turn
-  // the readings did not show: a clipped gyro's, sensor_range.hpp; a gap's, stream_faults.hpp).
-  Eigen::Matrix<double, 6, 1> turn = Eigen::Matrix<double, 6, 1>::Zero();
-};
 
 class UnseenMotion {
  public:
