@@ -173,12 +173,16 @@ TermEffect sensor_term(const std::vector<Rad>& s, const Derivatives& d, const Te
 // A gyro term: its change of (MD, I, A) at each station through the same derivatives as the
 // sensor terms, and the stations that share one draw of it. Its weights take the true azimuth; the
 // derivatives the survey's frame.
-TermEffect gyro_effect(const std::vector<Rad>& s, const Derivatives& d, const Term& t, const ToolCode& tool,
-                       const Field& field) {
+detail::GyroEffect gyro_changes(const std::vector<Rad>& s, const Term& t, const ToolCode& tool, const Field& field) {
   std::vector<detail::GyroStation> g;
   const double to_true = field.true_azimuth_offset_deg * kRad;
   for (const Rad& r : s) g.push_back({r.md, r.inc, r.azi + to_true, r.t});
-  detail::GyroEffect ge = detail::gyro_term(g, t, si_magnitude(t), tool.gyro, field);
+  return detail::gyro_term(g, t, si_magnitude(t), tool.gyro, field);
+}
+
+TermEffect gyro_effect(const std::vector<Rad>& s, const Derivatives& d, const Term& t, const ToolCode& tool,
+                       const Field& field) {
+  detail::GyroEffect ge = gyro_changes(s, t, tool, field);
   const std::size_t n = s.size();
   TermEffect e{std::vector<Vector3d>(n, Vector3d::Zero()), std::vector<Vector3d>(n, Vector3d::Zero()),
                std::move(ge.dia), std::move(ge.group)};
@@ -260,7 +264,58 @@ bool has_gyro_terms(const ToolCode& tool) {
   return false;
 }
 
+namespace {
+
+// A term's effect on the stations of one leg, [first, end): the leg's own stations carry its
+// changes, the others none (a gyro leg's run starts at its own first station).
+TermEffect leg_effect(const std::vector<Rad>& s, const Derivatives& d, const Term& t, const ToolCode& tool,
+                      const Field& field, std::size_t first, std::size_t end) {
+  const std::size_t n = s.size();
+  const bool xcl = detail::is_course_length_term(t.weight_function, t.code);
+  const bool gyro = detail::gyro_kind(t.weight_function) != detail::GyroKind::None;
+  if (!xcl && !gyro && !detail::weight_function(t.weight_function).weight)
+    throw std::invalid_argument("ISCWSA model: term " + t.code + " has an unknown weighting function '" +
+                                t.weight_function + "'");
+  if (gyro && (first > 0 || end < n)) {
+    // The leg's run, as if it were the whole well, placed among the well's stations; its groups
+    // keep their labels (shifted past the well's), the stations outside it join the nearest.
+    const std::vector<Rad> own(s.begin() + static_cast<std::ptrdiff_t>(first), s.begin() + static_cast<std::ptrdiff_t>(end));
+    const detail::GyroEffect run = gyro_changes(own, t, tool, field);
+    TermEffect e{std::vector<Vector3d>(n, Vector3d::Zero()), std::vector<Vector3d>(n, Vector3d::Zero()),
+                 std::vector<Vector3d>(n, Vector3d::Zero()), std::vector<int>(n, 0)};
+    const int shift = static_cast<int>(first);
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t j = std::clamp(k, first, end - 1) - first;
+      e.group[k] = run.group[j] + shift;
+      if (k < first || k >= end) continue;
+      e.dia[k] = run.dia[j];
+      e.star[k] = d.ending[k] * e.dia[k];
+      e.full[k] = (d.ending[k] + d.leaving[k]) * e.dia[k];
+    }
+    return e;
+  }
+  TermEffect e = xcl ? course_length_term(s, t, tool, field) : gyro ? gyro_effect(s, d, t, tool, field)
+                                                                    : sensor_term(s, d, t, field, tool);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k >= first && k < end) continue;
+    e.full[k].setZero();
+    e.star[k].setZero();
+    e.dia[k].setZero();
+  }
+  return e;
+}
+
+}  // namespace
+
 Result propagate(const std::vector<Station>& stations, const ToolCode& tool, const Field& field) {
+  return propagate(stations, std::vector<Leg>{Leg{-std::numeric_limits<double>::infinity(), tool}}, field);
+}
+
+Result propagate(const std::vector<Station>& stations, const std::vector<Leg>& legs, const Field& field) {
+  if (legs.empty()) throw std::invalid_argument("ISCWSA model: a survey program needs a leg");
+  for (std::size_t l = 1; l < legs.size(); ++l)
+    if (!(legs[l].from_md_m > legs[l - 1].from_md_m))
+      throw std::invalid_argument("ISCWSA model: the survey program's legs must start at increasing depths");
   std::vector<Rad> s;
   for (const auto& st : stations) {
     if (!s.empty() && !(st.md_m > s.back().md))
@@ -275,23 +330,51 @@ Result propagate(const std::vector<Station>& stations, const ToolCode& tool, con
   r.angle_variance.assign(n, Eigen::Vector2d::Zero());
   r.random_angle_variance.assign(n, Eigen::Vector2d::Zero());
   if (n == 0) return r;
-  const Derivatives d = derivatives(s, tool.revision);
-  for (const Term& t : tool.terms) {
-    const bool xcl = detail::is_course_length_term(t.weight_function, t.code);
-    const bool gyro = detail::gyro_kind(t.weight_function) != detail::GyroKind::None;
-    if (!xcl && !gyro && !detail::weight_function(t.weight_function).weight)
-      throw std::invalid_argument("ISCWSA model: term " + t.code + " has an unknown weighting function '" +
-                                  t.weight_function + "'");
-    const TermEffect e = xcl    ? course_length_term(s, t, tool, field)
-                         : gyro ? gyro_effect(s, d, t, tool, field)
-                                : sensor_term(s, d, t, field, tool);
-    r.codes.push_back(t.code);
-    r.per_term.push_back(covariances(e, t.propagation));
-    const bool random = t.propagation == Propagation::Random;
+  // Each leg's terms, one entry per draw: a per-well or global term met again in a later leg adds
+  // to the entry of its first.
+  struct Draw {
+    std::string label, code;
+    Propagation propagation;
+    TermEffect effect;
+  };
+  std::vector<Draw> draws;
+  const bool program = legs.size() > 1;
+  for (std::size_t l = 0; l < legs.size(); ++l) {
+    const auto at_or_below = [&](double md) {
+      return static_cast<std::size_t>(std::lower_bound(s.begin(), s.end(), md, [](const Rad& a, double m) { return a.md < m; }) -
+                                      s.begin());
+    };
+    const std::size_t first = l == 0 ? 0 : at_or_below(legs[l].from_md_m);
+    const std::size_t end = l + 1 < legs.size() ? at_or_below(legs[l + 1].from_md_m) : n;
+    const ToolCode& tool = legs[l].tool;
+    const Derivatives d = derivatives(s, tool.revision);
+    const std::string label = !program ? std::string() : (tool.name.empty() ? "leg " + std::to_string(l + 1) : tool.name) + ": ";
+    for (const Term& t : tool.terms) {
+      TermEffect e = leg_effect(s, d, t, tool, field, first, std::max(first, end));
+      const bool shared = t.propagation == Propagation::WellByWell || t.propagation == Propagation::Global;
+      const auto same = std::find_if(draws.begin(), draws.end(), [&](const Draw& x) {
+        return shared && x.code == t.code && x.propagation == t.propagation && x.effect.group.empty() && e.group.empty();
+      });
+      if (same != draws.end()) {
+        same->label = t.code;  // one draw of the whole well's
+        for (std::size_t k = 0; k < n; ++k) {
+          same->effect.full[k] += e.full[k];
+          same->effect.star[k] += e.star[k];
+          same->effect.dia[k] += e.dia[k];
+        }
+        continue;
+      }
+      draws.push_back({label + t.code, t.code, t.propagation, std::move(e)});
+    }
+  }
+  for (const Draw& x : draws) {
+    r.codes.push_back(x.label);
+    r.per_term.push_back(covariances(x.effect, x.propagation));
+    const bool random = x.propagation == Propagation::Random;
     for (std::size_t k = 0; k < n; ++k) {
       r.total[k] += r.per_term.back()[k];
       if (random) r.random[k] += r.per_term.back()[k];
-      const Eigen::Vector2d angles(e.dia[k](1) * e.dia[k](1), e.dia[k](2) * e.dia[k](2));
+      const Eigen::Vector2d angles(x.effect.dia[k](1) * x.effect.dia[k](1), x.effect.dia[k](2) * x.effect.dia[k](2));
       r.angle_variance[k] += angles;
       if (random) r.random_angle_variance[k] += angles;
     }

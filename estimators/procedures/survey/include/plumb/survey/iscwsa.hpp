@@ -113,6 +113,21 @@ struct Result {
 // function is std::invalid_argument naming the term.
 Result propagate(const std::vector<Station>& stations, const ToolCode& tool, const Field& field);
 
+// One leg of a survey program: the stations from this measured depth on (to the next leg's) were
+// surveyed by this tool. The first leg also holds every station above its depth.
+struct Leg {
+  double from_md_m = -std::numeric_limits<double>::infinity();
+  ToolCode tool;
+};
+
+// A well surveyed in legs, each by its own tool (a gyro in the top hole, MWD below; a navigator
+// re-tuned while drilling). Each leg's systematic terms are its own draw, so a leg's errors move
+// the stations below it rigidly; a per-well (W) or global (G) term of the same code is one draw
+// across the legs; a gyro leg runs from its own first station. Per-term codes are "TOOL: CODE"
+// (the leg's tool name, or "leg N") when there is more than one leg. Leg depths must increase
+// strictly (std::invalid_argument otherwise).
+Result propagate(const std::vector<Station>& stations, const std::vector<Leg>& legs, const Field& field);
+
 // A tool code file is read by plumb/survey/tool_code_file.hpp (estimators/formats/survey_file).
 
 // The built-in tool codes: "MWD" (ISCWSA MWD revision 5, OWSG values of 5.1.1: DEC-OH 0.21 deg),
