@@ -61,6 +61,11 @@ ClearanceWatch::ClearanceWatch(const components::ClearanceCliOptions& options, c
         "plumb/clearance and plumb/status");
 }
 
+void ClearanceWatch::start_leg(const survey::iscwsa::ToolCode& tool) {
+  for (Offset& offset : offsets_)
+    if (offset.view) offset.view->start_leg(tool);
+}
+
 std::optional<ClearanceWatch::Pair> ClearanceWatch::sidetrack_pair(Offset& offset, const survey::SurveyRow& row,
                                                                    const survey::WellPoint& station) {
   if (!offset.view) return std::nullopt;

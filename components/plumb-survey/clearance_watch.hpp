@@ -43,6 +43,8 @@ class ClearanceWatch {
   // The survey's newest station against every offset well (a sidetrack: once below its kick-off).
   // Every row of the survey comes here, in order: a sidetrack's view is built from them.
   std::vector<Pair> at_station(const survey::SurveyRow& row);
+  // The survey started a leg (survey::Survey::start_leg): the sidetracks see the well drilled the same way.
+  void start_leg(const survey::iscwsa::ToolCode& tool);
 
   survey::ClearanceLevel level() const { return level_; }
   const survey::ClearanceLevels& levels() const { return options_.levels; }

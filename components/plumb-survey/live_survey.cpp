@@ -1,6 +1,7 @@
 #include "live_survey.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <set>
@@ -58,6 +59,7 @@ std::optional<survey::StationListModel> reference_model(const LiveOptions& o, co
   survey::StationListModel m = offset_model(o, s);
   m.error_model = s.tool_code->name;
   m.tool_code = s.tool_code;
+  m.later_legs = s.later_legs;
   m.first_station_surveyed = true;
   return m;
 }
@@ -114,7 +116,7 @@ class LiveSurvey {
     while (!components::g_stop && !enough()) {
       say_what_it_waits_for();
       if (watch_)
-        if (const auto changed = watch_->change()) note(*changed);
+        if (const auto changed = watch_->change()) navigator_changed(*changed);
       if (o_.timeout_s > 0 && std::chrono::duration<double>(Clock::now() - t0_).count() > o_.timeout_s) {
         status_.publish("failed", all_counters(), "timed out");
         components::print_error(kProgram, "timed out with " + std::to_string(result_.rows().size()) + " of " +
@@ -323,6 +325,32 @@ class LiveSurvey {
   survey::Survey result_;
   // auto on the navigator's stations without its parameters: plumb's own terms, said on status.
   bool error_model_fallback() const { return !error_model_status_.empty(); }
+  // A change of the navigator's parameters configures it afresh and it aligns again
+  // (docs/components.md): a new gyro run, so the stations below are a survey leg of their own
+  // through the new figures; those above keep what they were published with.
+  void navigator_changed(const NavigatorParameterWatch::Change& c) {
+    const std::string restart = "restart plumb-survey to survey through the host's (a restart surveys the file's "
+                                "stations again, all through the host's figures then)";
+    if (!c.now) return note(c.said + ": this survey goes on through the model it has; " + restart);
+    if (error_model_fallback()) return note(c.said + ": this survey goes on through plumb's own terms; " + restart);
+    const survey::SurveyOptions next = components::make_survey_options(o_.survey, o_.estimator, &*c.now);
+    const survey::iscwsa::ToolCode& tool = *next.tool_code;
+    result_.start_leg(tool);
+    clearance_.start_leg(tool);
+    const auto& rows = result_.rows();
+    char md[32];
+    std::snprintf(md, sizeof md, "%.2f", rows.empty() ? 0.0 : rows.back().station.md_m);
+    std::string line = c.said + ": the navigator aligns again, a new gyro run, so the survey goes on in a new leg " +
+                       (rows.empty() ? std::string("from its first station") : std::string("below MD ") + md + " m") +
+                       " through its new figures (" + tool.name + ", systematic errors a draw of their own); the " +
+                       std::to_string(rows.size()) + " station(s) above keep theirs";
+    if (next.latitude_deg != result_.options().latitude_deg && !std::isnan(result_.options().latitude_deg)) {
+      char lat[32];
+      std::snprintf(lat, sizeof lat, "%g", result_.options().latitude_deg);
+      line += "; the well's latitude stays " + std::string(lat) + " deg for the whole survey (--latitude, or a restart)";
+    }
+    note(line);
+  }
   std::string error_model_said_, error_model_status_;
   SurveyStore store_;
   components::Connection conn_;

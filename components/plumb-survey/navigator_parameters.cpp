@@ -101,18 +101,22 @@ NavigatorAnswer NavigatorParameterWatch::first(double wait_s) {
   return answer;
 }
 
-std::optional<std::string> NavigatorParameterWatch::change() {
+std::optional<NavigatorParameterWatch::Change> NavigatorParameterWatch::change() {
   std::optional<topics::ComponentParameters> latest;
   for (topics::ComponentParameters m; reader_ && reader_->take(m);) latest = std::move(m);
   if (!latest || latest->revision == seen_revision_) return std::nullopt;
   seen_revision_ = latest->revision;
-  const std::string keep = ": this survey goes on through the model it started with; restart plumb-survey to survey "
-                           "through the host's (a restart surveys the file's stations again)";
-  if (!latest->loaded) return "estimator host '" + host_ + "' unloaded the " + plugin_ + " plugin" + keep;
-  const auto now = parameters_of(*latest);
+  if (!latest->loaded) {
+    if (!taken_) return std::nullopt;
+    taken_.reset();
+    return Change{"estimator host '" + host_ + "' unloaded the " + plugin_ + " plugin", std::nullopt};
+  }
+  auto now = parameters_of(*latest);
   if (taken_ && now == *taken_) return std::nullopt;
   const std::string what = taken_ ? differences(*taken_, now) : std::string("now written");
-  return "the " + plugin_ + " navigator's parameters on estimator host '" + host_ + "' changed (" + what + ")" + keep;
+  taken_ = now;
+  return Change{"the " + plugin_ + " navigator's parameters on estimator host '" + host_ + "' changed (" + what + ")",
+                std::move(now)};
 }
 
 }  // namespace plumb::survey_component

@@ -30,9 +30,13 @@ class NavigatorParameterWatch {
   // network's sake: a host that is not there or does not run the plugin, an identity that may not
   // read the topic, come back as no parameters with the reason.
   NavigatorAnswer first(double wait_s);
-  // What the host wrote since: the line to say when its parameters changed from those the survey
-  // took (once per change), or nothing.
-  std::optional<std::string> change();
+  // What the host wrote since the parameters last taken (once per change), or nothing: what
+  // changed, and the parameters now (none: the plugin was unloaded). The new ones are taken.
+  struct Change {
+    std::string said;  // "the strapdown navigator's parameters on estimator host 'H' changed (a 1 -> 2)"
+    std::optional<survey::iscwsa::NavigatorParameters> now;
+  };
+  std::optional<Change> change();
 
  private:
   std::string where_;  // "domain 7 (cyclonedds)", for messages
@@ -40,7 +44,7 @@ class NavigatorParameterWatch {
   std::string host_, plugin_, topic_;
   std::optional<transport::Reader<topics::ComponentParameters>> reader_;
   std::string refused_;  // why there is no reader (an identity not granted the topic)
-  std::optional<survey::iscwsa::NavigatorParameters> taken_;  // what first() returned
+  std::optional<survey::iscwsa::NavigatorParameters> taken_;  // what first() or the last change() returned
   std::uint64_t seen_revision_ = 0;
 };
 

@@ -62,6 +62,10 @@ void add_survey_options(CLI::App& app, SurveyCliOptions& o) {
                  "parameters: plumb survey's --param, plumb-survey asks its estimator host; plumb's own terms when "
                  "they are not known, said)")
       ->capture_default_str();
+  app.add_option("--error-model-from", o.error_model_from,
+                 "MD:MODEL, a survey program: from this measured depth (m) on, the stations are priced by MODEL (a "
+                 "built-in tool code or a tool code file), a leg whose systematic errors are its own draw (repeatable, "
+                 "depths increasing; e.g. --error-model GYRO-NS --error-model-from 1200:MWD)");
   app.add_option("--still-tolerance", o.still_tolerance_m, "depth change within a window that still counts as a stop, "
                                                           "m, at least (6.5 depth sigmas when the depth is noisier)")
       ->capture_default_str();
@@ -82,14 +86,17 @@ void add_survey_options(CLI::App& app, SurveyCliOptions& o) {
 
 namespace {
 
-std::optional<survey::iscwsa::ToolCode> named_tool_code(const std::string& name) {
+// A built-in tool code or a tool code file, named by `option` (whose own names are `also`).
+std::optional<survey::iscwsa::ToolCode> named_tool_code(const std::string& name, const char* option = "--error-model",
+                                                        const char* also = "auto, plumb, ") {
   const auto builtin = survey::iscwsa::builtin_tool_codes();
   if (std::find(builtin.begin(), builtin.end(), name) != builtin.end()) return survey::iscwsa::builtin_tool_code(name);
   std::ifstream in(name);
   if (!in) {
     std::string names;
-    for (const auto& n : builtin) names += ", " + n;
-    throw std::invalid_argument("--error-model '" + name + "': no such tool code file (built in: auto, plumb" + names + ")");
+    for (const auto& n : builtin) names += (names.empty() ? "" : ", ") + n;
+    throw std::invalid_argument(std::string(option) + " '" + name + "': no such tool code file (built in: " + also +
+                                names + ")");
   }
   return survey::iscwsa::read_tool_code(in, name);
 }
@@ -138,6 +145,20 @@ survey::SurveyOptions make_survey_options(const SurveyCliOptions& o, const std::
   // A navigator's sigma holds its drift since alignment: against a gyro model it counts only by
   // what it exceeds the model's (survey::SurveyOptions::station_sigma_beyond_model).
   s.station_sigma_beyond_model = navigator_stations && s.tool_code && survey::iscwsa::has_gyro_terms(*s.tool_code);
+  for (const std::string& leg : o.error_model_from) {
+    const auto colon = leg.find(':');
+    const auto md = colon == std::string::npos ? std::nullopt : parse_number(leg.substr(0, colon));
+    if (!md || colon + 1 >= leg.size())
+      throw std::invalid_argument("--error-model-from '" + leg + "': expected MD:MODEL, a measured depth in m and a "
+                                  "tool code (e.g. 1200:MWD)");
+    if (!s.tool_code)
+      throw std::invalid_argument("--error-model-from needs an ISCWSA error model above its depth: --error-model " +
+                                  o.error_model + " prices the stations with plumb's own terms" +
+                                  (o.error_model == "auto" ? " here (name one: MWD, GYRO-NS, a tool code file)" : ""));
+    if (!s.later_legs.empty() && !(*md > s.later_legs.back().from_md_m))
+      throw std::invalid_argument("--error-model-from '" + leg + "': the legs' depths must increase");
+    s.later_legs.push_back({*md, *named_tool_code(leg.substr(colon + 1), "--error-model-from", "")});
+  }
   if (s.reference != survey::AzimuthReference::Magnetic && !s.north.declination_known)
     throw std::invalid_argument("--reference " + o.reference + " needs --declination (or declination_deg in --reference-file)");
   if (s.reference == survey::AzimuthReference::Grid && !s.north.convergence_known)

@@ -3,7 +3,8 @@
 # strapdown), no sensor data needed: plumb-estimator --plugin strapdown on transport S, plumb-survey
 # --plugin strapdown --error-model auto on transport V reading them. The survey takes the host's
 # figures; a `plumb param set` on the host is written again (plumb topic echo: revision 2, the new
-# value), and the running survey says what changed and that it keeps the model it started with.
+# value), and the running survey says what changed and that it goes on in a new survey leg through
+# the new figures (the navigator aligns again), the well's latitude the one it started with.
 # usage: survey_navigator_retuned.sh BIN_DIR S V DOMAIN
 set -uo pipefail
 bin=$1 host_t=$2 survey_t=$3
@@ -37,8 +38,8 @@ if grep -q "^revision: 2$" <<< "$echo" && grep -A1 'name: "latitude_deg"' <<< "$
 else
   fail "after param set, $topic: $(head -12 <<< "$echo")"
 fi
-if wait_for "$work/survey.err" "navigator's parameters on estimator host '$host' changed \(latitude_deg 35 -> 40\): this survey goes on through the model it started with" 20; then
-  pass "the running survey says the navigator was re-tuned, and that it keeps its model"
+if wait_for "$work/survey.err" "navigator's parameters on estimator host '$host' changed \(latitude_deg 35 -> 40\): the navigator aligns again, a new gyro run, so the survey goes on in a new leg from its first station through its new figures \(GYRO:navigator \(tactical.*\); the 0 station\(s\) above keep theirs; the well's latitude stays 35 deg for the whole survey" 20; then
+  pass "the running survey says the navigator was re-tuned, and that it goes on in a new leg through its figures"
 else
   fail "no change said: $(cat "$work/survey.err")"
 fi

@@ -100,6 +100,34 @@ expect_error "inclination out of range" "range.csv:3: inclination 190 deg outsid
 expect_error "missing reference field" "missing reference total field" "$bin/plumb" survey --stations "$work/good.csv" --gravity 9.8 --dip 60 -o "$work/x.csv"
 expect_error "true survey without declination" "needs --declination" "$bin/plumb" survey --stations "$work/good.csv" "${skip[@]}" --reference true -o "$work/x.csv"
 if [ ! -e "$work/x.csv" ]; then pass "nothing written by a failed survey"; else fail "a failed survey wrote x.csv"; fi
+# A survey program: a gyro to 1200 m, MWD below; each station names the model that priced it, the
+# stations above the MWD leg are as the gyro alone gives them, and the end is neither tool's alone.
+python3 - "$work/well.csv" <<'PY'
+import math, sys
+with open(sys.argv[1], "w") as out:
+    out.write("md_m,inclination_deg,azimuth_deg\n")
+    for k in range(81):
+        md = 30.0 * k
+        out.write(f"{md},{0 if md <= 1200 else min(60, (md - 1200) / 10)},75\n")
+PY
+program=(--stations "$work/well.csv" "${skip[@]}" --reference true --declination 0 --latitude 60)
+"$bin/plumb" survey "${program[@]}" --error-model GYRO-NS --error-model-from 1230:MWD -o "$work/program.csv" 2> /dev/null &&
+"$bin/plumb" survey "${program[@]}" --error-model GYRO-NS -o "$work/gyro.csv" 2> /dev/null &&
+"$bin/plumb" survey "${program[@]}" --error-model MWD -o "$work/mwd.csv" 2> /dev/null ||
+  fail "plumb survey --error-model-from failed"
+python3 - "$work/program.csv" "$work/gyro.csv" "$work/mwd.csv" <<'PY' && pass "a survey program (--error-model-from 1230:MWD): each station's model named, the gyro's above, neither tool's alone at the end" || fail "survey program"
+import csv, sys
+program, gyro, mwd = ([r for r in csv.DictReader(l for l in open(p) if not l.startswith('#'))] for p in sys.argv[1:])
+names = [r["error_model"].split()[0] for r in program]
+assert names == ["GYRO-NS"] * 41 + ["MWD"] * 40, names
+assert all(a["cov_nn"] == b["cov_nn"] and a["cov_ee"] == b["cov_ee"] for a, b in zip(program[:41], gyro[:41]))
+end = [float(r[-1]["cov_ee"]) for r in (program, gyro, mwd)]
+assert end[0] != end[1] and end[0] != end[2], end
+PY
+expect_error "a leg's unknown model" "--error-model-from 'NOPE': no such tool code file" "$bin/plumb" survey "${program[@]}" --error-model GYRO-NS --error-model-from 1230:NOPE -o "$work/x.csv"
+expect_error "a leg below plumb's own terms" "--error-model-from needs an ISCWSA error model above its depth" "$bin/plumb" survey "${program[@]}" --error-model plumb --error-model-from 1230:MWD -o "$work/x.csv"
+expect_error "a leg without its depth" "--error-model-from 'MWD': expected MD:MODEL" "$bin/plumb" survey "${program[@]}" --error-model GYRO-NS --error-model-from MWD -o "$work/x.csv"
+rm -f "$work/x.csv"
 # A station without its measured field fails QC and is kept, flagged.
 "$bin/plumb" survey --stations "$work/good.csv" "${ref[@]}" -o "$work/flagged.csv" 2> /dev/null
 if output_matches "no |B| measured" cat "$work/flagged.csv" && [ "$(grep -c ',fail,' "$work/flagged.csv")" -eq 2 ]; then

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "plumb/survey/iscwsa.hpp"
+#include "plumb/survey/survey.hpp"
 
 namespace plumb::survey::iscwsa {
 namespace {
@@ -104,3 +105,56 @@ TEST(IscwsaProgram, LegsOutOfOrderAreRefused) {
 
 }  // namespace
 }  // namespace plumb::survey::iscwsa
+
+namespace plumb::survey {
+namespace {
+
+// A survey priced by one tool, re-tuned while drilling: the stations already surveyed keep their
+// uncertainty; those below are priced by the program of both legs.
+TEST(SurveyProgram, ALegStartedWhileSurveyingPricesTheStationsBelowIt) {
+  SurveyOptions o;
+  o.tool_code = iscwsa::builtin_tool_code("MWD:rev4");
+  Survey survey(o);
+  const auto station = [](double md) {
+    Station s;
+    s.t_s = md;  // a second a metre
+    s.md_m = md;
+    s.inclination_deg = 60;
+    s.magnetic_azimuth_deg = 30;
+    return s;
+  };
+  for (double md = 0; md <= 600; md += 30) survey.add(station(md));
+  const Eigen::Matrix3d at_600 = survey.rows().back().uncertainty.covariance;
+  iscwsa::ToolCode gyro = iscwsa::builtin_tool_code("GYRO:mems");
+  survey.start_leg(gyro);
+  EXPECT_EQ(survey.rows().back().uncertainty.covariance, at_600);
+  for (double md = 630; md <= 1200; md += 30) survey.add(station(md));
+  EXPECT_EQ(survey.rows()[20].uncertainty.covariance, at_600);
+  EXPECT_EQ(survey.rows()[20].error_model, o.tool_code->name);
+  EXPECT_EQ(survey.rows()[21].error_model, gyro.name);
+  // The same stations through the program at once.
+  std::vector<iscwsa::Station> stations;
+  for (const SurveyRow& r : survey.rows())
+    stations.push_back({r.station.md_m, r.station.inclination_deg, r.azimuth_deg, r.station.magnetic_azimuth_deg,
+                        r.point.tvd_m, r.station.t_s});
+  iscwsa::ToolCode mwd = *o.tool_code;
+  std::erase_if(mwd.terms, [](const iscwsa::Term& t) { return t.weight_function == "AZ" || t.weight_function == "DBH"; });
+  const iscwsa::Result program = iscwsa::propagate(
+      stations, std::vector<iscwsa::Leg>{{-std::numeric_limits<double>::infinity(), mwd}, {600.5, gyro}}, iscwsa::Field{});
+  const Eigen::Matrix3d& end = survey.rows().back().uncertainty.covariance;
+  EXPECT_LT((end - program.total.back()).norm(), 1e-9 * end.norm());
+  // Neither tool alone: the gyro's leg is not the MWD tool's.
+  const iscwsa::Result mwd_only = iscwsa::propagate(stations, mwd, iscwsa::Field{});
+  EXPECT_GT((end - mwd_only.total.back()).norm(), 0.01 * end.norm());
+}
+
+TEST(SurveyProgram, LegsNeedAToolCodeAboveThem) {
+  SurveyOptions o;  // plumb's own propagation
+  Survey survey(o);
+  EXPECT_THROW(survey.start_leg(iscwsa::builtin_tool_code("MWD")), std::invalid_argument);
+  o.later_legs.push_back({600, iscwsa::builtin_tool_code("MWD")});
+  EXPECT_THROW(Survey{o}, std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace plumb::survey

@@ -122,6 +122,7 @@ SurveyOptions station_list_options(const StationListModel& model, const Eigen::V
   o.field.dip_deg = model.dip_deg;
   o.checks = {false, false, false};
   o.tool_code = model.tool_code ? *model.tool_code : clearance_tool_code(model.error_model);
+  o.later_legs = model.later_legs;
   o.latitude_deg = model.latitude_deg;
   o.first_station_surveyed = model.first_station_surveyed;
   o.tie_in = tie_in;
@@ -201,6 +202,16 @@ SidetrackView::SidetrackView(double kick_off_md_m, StationListModel model, std::
   model_.first_station_surveyed = true;  // the kick-off is the well's first station surveyed
   // A tool code that cannot be read is said now, not at the kick-off.
   if (!model_.tool_code) clearance_tool_code(model_.error_model);
+}
+
+void SidetrackView::start_leg(const iscwsa::ToolCode& tool) {
+  if (survey_) {
+    survey_->start_leg(tool);
+    return;
+  }
+  model_.tool_code = tool;
+  model_.error_model = tool.name;
+  model_.later_legs.clear();
 }
 
 std::optional<WellPoint> SidetrackView::add(const Station& station, const WellPoint& course_point) {

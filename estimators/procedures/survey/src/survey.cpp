@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -41,15 +42,45 @@ Survey::Survey(SurveyOptions o) : options_(std::move(o)) {
   if (options_.field.total_b_uT) options_.errors.total_b_uT = *options_.field.total_b_uT;
   if (options_.field.dip_deg) options_.errors.dip_deg = *options_.field.dip_deg;
   if (options_.field.gravity_mps2) options_.errors.gravity_mps2 = *options_.field.gravity_mps2;
-  require(!options_.tool_code || !iscwsa::needs_latitude(*options_.tool_code) || std::isfinite(options_.latitude_deg),
-          "the error model " + (options_.tool_code ? options_.tool_code->name : std::string()) +
-              " gyrocompasses: it needs the well's latitude (--latitude)");
-  if (options_.tool_code && options_.reference == AzimuthReference::Magnetic) {
-    auto& terms = options_.tool_code->terms;
+  require(options_.later_legs.empty() || options_.tool_code,
+          "a survey program's later legs need an ISCWSA error model for the stations above them");
+  for (std::size_t l = 0; l < options_.later_legs.size(); ++l)
+    require(std::isfinite(options_.later_legs[l].from_md_m) &&
+                (l == 0 || options_.later_legs[l].from_md_m > options_.later_legs[l - 1].from_md_m),
+            "a survey program's legs must start at increasing, finite measured depths");
+  if (options_.tool_code) prepare(*options_.tool_code);
+  for (auto& leg : options_.later_legs) prepare(leg.tool);
+}
+
+void Survey::prepare(iscwsa::ToolCode& tool) const {
+  require(!iscwsa::needs_latitude(tool) || std::isfinite(options_.latitude_deg),
+          "the error model " + tool.name + " gyrocompasses: it needs the well's latitude (--latitude)");
+  if (options_.reference == AzimuthReference::Magnetic) {
+    auto& terms = tool.terms;
     terms.erase(std::remove_if(terms.begin(), terms.end(),
                                [](const iscwsa::Term& t) { return t.weight_function == "AZ" || t.weight_function == "DBH"; }),
                 terms.end());
   }
+}
+
+void Survey::start_leg(iscwsa::ToolCode tool) {
+  require(options_.tool_code.has_value(), "a survey leg needs an ISCWSA error model for the stations above it");
+  prepare(tool);
+  if (rows_.empty()) {
+    options_.tool_code = std::move(tool);
+    options_.later_legs.clear();
+    return;
+  }
+  // Every later station lies deeper than this (duplicates are refused).
+  const double from = rows_.back().station.md_m + kDuplicateDepthM;
+  while (!options_.later_legs.empty() && options_.later_legs.back().from_md_m >= from) options_.later_legs.pop_back();
+  options_.later_legs.push_back({from, std::move(tool)});
+}
+
+const iscwsa::ToolCode* Survey::tool_code_at(double md_m) const {
+  for (auto leg = options_.later_legs.rbegin(); leg != options_.later_legs.rend(); ++leg)
+    if (md_m >= leg->from_md_m) return &leg->tool;
+  return options_.tool_code ? &*options_.tool_code : nullptr;
 }
 
 namespace {
@@ -87,7 +118,9 @@ void Survey::add_model_uncertainty(SurveyRow& row) {
     field.latitude_deg = options_.latitude_deg;
     field.true_azimuth_offset_deg = true_azimuth_offset_deg(options_.reference, options_.north);
     field.first_station_surveyed = options_.first_station_surveyed;
-    model = iscwsa::propagate(stations, *options_.tool_code, field);
+    std::vector<iscwsa::Leg> legs{{-std::numeric_limits<double>::infinity(), *options_.tool_code}};
+    legs.insert(legs.end(), options_.later_legs.begin(), options_.later_legs.end());
+    model = iscwsa::propagate(stations, legs, field);
   }
   // The measured noise (each station's sigma from its estimator and its depth sigma) as plumb's
   // own random terms; the model's terms beside it. A station's sigma that already holds the
@@ -171,7 +204,8 @@ const SurveyRow& Survey::add(const Station& given) {
   row.reference = options_.reference;
   row.azimuth_deg = convert_magnetic_azimuth(s.magnetic_azimuth_deg, options_.reference, options_.north);
   row.field = options_.field;
-  row.error_model = options_.tool_code ? options_.tool_code->name : "plumb";
+  const iscwsa::ToolCode* tool = tool_code_at(s.md_m);
+  row.error_model = tool ? tool->name : "plumb";
   row.qc = check_station(s.total_g_mps2, s.total_b_uT, s.dip_deg, options_.field, options_.tolerances, options_.checks);
   if (!s.azimuth_valid) row.warning = "azimuth ill-conditioned (near vertical)";
 

@@ -34,7 +34,8 @@ struct SurveyCliOptions {
   double new_station_m = 0.1;
   double min_still_s = 5;
   std::string stop_station = "whole";
-  std::string error_model = "auto";    // auto, plumb, a built-in tool code, or a tool code file  // whole: every window of a stop; first: its first valid window
+  std::string error_model = "auto";    // auto, plumb, a built-in tool code, or a tool code file
+  std::vector<std::string> error_model_from;  // MD:MODEL, the survey program's later legs
   std::optional<double> pipe_length_m;
   std::string tally_file;  // per stop: joint_m (run in after it), correction_m (added to its depth)
   double start_md_m = 0;

@@ -21,6 +21,8 @@ struct StationListModel {
   std::string error_model = "MWD";
   // A tool code built rather than named (the navigator's own gyro model): used instead of error_model.
   std::optional<iscwsa::ToolCode> tool_code;
+  // A survey program's later legs (SurveyOptions::later_legs): the survey's own, for a sidetrack.
+  std::vector<iscwsa::Leg> later_legs;
   double gravity_mps2 = kStandardGravity, total_b_uT = 50, dip_deg = 60;
   double latitude_deg = std::numeric_limits<double>::quiet_NaN();
   bool first_station_surveyed = true;  // a well surveyed from its first station (docs/surveys.md)
@@ -72,6 +74,9 @@ class SidetrackView {
   // refuses, and for a kick-off above the well's first station.
   std::optional<WellPoint> add(const Station& station, const WellPoint& course_point);
   double kick_off_md_m() const { return kick_off_md_m_; }
+  // The well's stations from the next on are priced by `tool` (Survey::start_leg); all of them when
+  // the kick-off has not been reached.
+  void start_leg(const iscwsa::ToolCode& tool);
   // The survey from the kick-off; null until a station reached it.
   const Survey* survey() const { return survey_ ? &*survey_ : nullptr; }
 

@@ -64,6 +64,9 @@ struct SurveyOptions {
   // The ISCWSA model (a tool code); without one, plumb's own propagation of `errors`. Its
   // declination terms (AZ, DBH) are left out of a magnetic survey, whose north is magnetic north.
   std::optional<iscwsa::ToolCode> tool_code;
+  // The survey program's later legs: from each depth on the stations are priced by its tool code,
+  // each leg's systematic terms its own draw (iscwsa::Leg). They need tool_code, the first leg's.
+  std::vector<iscwsa::Leg> later_legs;
   double latitude_deg = std::numeric_limits<double>::quiet_NaN();  // the gyro model's gyrocompass terms
   // The stations' own angle sigmas already hold what the tool code's terms describe: the strapdown
   // navigator's filter carries its drift since alignment in every row's sigma. Each station's sigma
@@ -99,6 +102,13 @@ class Survey {
   // and flagged. Throws StationError (and leaves the survey unchanged) for a station whose geometry
   // is impossible: depth going backwards or repeated, inclination outside [0, 180], azimuth not finite.
   const SurveyRow& add(const Station& station);
+  // From the next station on, the survey is priced by `tool`, a leg of its own (a re-tuned
+  // navigator's figures); the stations already added keep their uncertainty. Before any station
+  // it replaces the survey's tool code. Throws std::invalid_argument as the constructor does for a
+  // tool code that cannot work (a gyrocompass without the latitude), or without a tool code to follow.
+  void start_leg(iscwsa::ToolCode tool);
+  // The tool code that prices a station at this depth: the last leg starting at or above it.
+  const iscwsa::ToolCode* tool_code_at(double md_m) const;
   const std::vector<SurveyRow>& rows() const { return rows_; }
   // The position uncertainty at a point between stations `course` and `course + 1`, as if a station
   // had been surveyed there in the direction the path has (azimuth in the survey's reference): the
@@ -120,6 +130,8 @@ class Survey {
   std::vector<StationGeometry> geometry_;
   std::vector<StationSigma> sigma_;
   void add_model_uncertainty(SurveyRow& row);
+  // A tool code made ready for this survey: checked, its declination terms left out of a magnetic one.
+  void prepare(iscwsa::ToolCode& tool) const;
   std::size_t failed_qc_ = 0;
 };
 
