@@ -95,6 +95,17 @@ TEST(IscwsaProgram, AContinuousGyroLegDriftsFromItsOwnFirstStation) {
   EXPECT_EQ(program.per_term[1][19].norm(), 0.0);
 }
 
+TEST(IscwsaProgram, ALegBelowTheLastStationChangesNothingYet) {
+  ToolCode gyro = builtin_tool_code("GYRO:mems");
+  const ToolCode mwd = builtin_tool_code("MWD");
+  const std::vector<Station> s = tangent();
+  for (const ToolCode& next : {gyro, mwd}) {
+    const Result program = propagate(s, {{-std::numeric_limits<double>::infinity(), mwd}, {1300, next}}, Field{});
+    const Result one = propagate(s, mwd, Field{});
+    EXPECT_LT((program.total.back() - one.total.back()).norm(), 1e-12 * one.total.back().norm()) << next.name;
+  }
+}
+
 TEST(IscwsaProgram, LegsOutOfOrderAreRefused) {
   const std::vector<Leg> legs = {{-std::numeric_limits<double>::infinity(), azimuth_only("A", Propagation::Systematic)},
                                  {600, azimuth_only("B", Propagation::Systematic)},
@@ -146,6 +157,30 @@ TEST(SurveyProgram, ALegStartedWhileSurveyingPricesTheStationsBelowIt) {
   // Neither tool alone: the gyro's leg is not the MWD tool's.
   const iscwsa::Result mwd_only = iscwsa::propagate(stations, mwd, iscwsa::Field{});
   EXPECT_GT((end - mwd_only.total.back()).norm(), 0.01 * end.norm());
+}
+
+TEST(SurveyProgram, ALegStartedWhileSurveyingKeepsTheLegsGivenBelow) {
+  SurveyOptions o;
+  o.tool_code = iscwsa::builtin_tool_code("GYRO:tactical");
+  o.later_legs.push_back({900, iscwsa::builtin_tool_code("MWD")});
+  Survey survey(o);
+  Station s;
+  s.inclination_deg = 60;
+  s.magnetic_azimuth_deg = 30;
+  const auto add_to = [&](double to) {
+    for (; s.md_m <= to; s.md_m += 30, s.t_s += 30) survey.add(s);
+  };
+  add_to(600);
+  survey.start_leg(iscwsa::builtin_tool_code("GYRO:mems"));
+  survey.start_leg(iscwsa::builtin_tool_code("GYRO:mems"));  // again before another station: one leg
+  add_to(1200);
+  ASSERT_EQ(survey.options().later_legs.size(), 2u);
+  std::vector<std::string> names;
+  for (const SurveyRow& r : survey.rows()) names.push_back(r.error_model.substr(0, r.error_model.find(' ')));
+  std::vector<std::string> want(21, "GYRO:tactical");
+  want.resize(30, "GYRO:mems");
+  want.resize(41, "MWD");
+  EXPECT_EQ(names, want);
 }
 
 TEST(SurveyProgram, LegsNeedAToolCodeAboveThem) {

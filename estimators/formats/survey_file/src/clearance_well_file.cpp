@@ -209,9 +209,11 @@ void SidetrackView::start_leg(const iscwsa::ToolCode& tool) {
     survey_->start_leg(tool);
     return;
   }
-  model_.tool_code = tool;
-  model_.error_model = tool.name;
-  model_.later_legs.clear();
+  // Not at the kick-off yet: from below the last station seen (or the whole well before any).
+  if (above_)
+    iscwsa::insert_leg(model_.later_legs, {above_->first.md_m + kDuplicateDepthM, tool});
+  else
+    model_.tool_code = tool, model_.error_model = tool.name;
 }
 
 std::optional<WellPoint> SidetrackView::add(const Station& station, const WellPoint& course_point) {

@@ -276,6 +276,9 @@ TermEffect leg_effect(const std::vector<Rad>& s, const Derivatives& d, const Ter
   if (!xcl && !gyro && !detail::weight_function(t.weight_function).weight)
     throw std::invalid_argument("ISCWSA model: term " + t.code + " has an unknown weighting function '" +
                                 t.weight_function + "'");
+  if (first >= end)  // a leg below the last station (a live survey's next): nothing yet
+    return {std::vector<Vector3d>(n, Vector3d::Zero()), std::vector<Vector3d>(n, Vector3d::Zero()),
+            std::vector<Vector3d>(n, Vector3d::Zero())};
   if (gyro && (first > 0 || end < n)) {
     // The leg's run, as if it were the whole well, placed among the well's stations; its groups
     // keep their labels (shifted past the well's), the stations outside it join the nearest.
@@ -306,6 +309,15 @@ TermEffect leg_effect(const std::vector<Rad>& s, const Derivatives& d, const Ter
 }
 
 }  // namespace
+
+void insert_leg(std::vector<Leg>& legs, Leg leg) {
+  const auto at = std::lower_bound(legs.begin(), legs.end(), leg.from_md_m,
+                                   [](const Leg& l, double md) { return l.from_md_m < md; });
+  if (at != legs.end() && at->from_md_m == leg.from_md_m)
+    *at = std::move(leg);
+  else
+    legs.insert(at, std::move(leg));
+}
 
 Result propagate(const std::vector<Station>& stations, const ToolCode& tool, const Field& field) {
   return propagate(stations, std::vector<Leg>{Leg{-std::numeric_limits<double>::infinity(), tool}}, field);
@@ -339,18 +351,18 @@ Result propagate(const std::vector<Station>& stations, const std::vector<Leg>& l
   };
   std::vector<Draw> draws;
   const bool program = legs.size() > 1;
+  const auto at_or_below = [&](double md) {
+    return static_cast<std::size_t>(std::lower_bound(s.begin(), s.end(), md, [](const Rad& a, double m) { return a.md < m; }) -
+                                    s.begin());
+  };
   for (std::size_t l = 0; l < legs.size(); ++l) {
-    const auto at_or_below = [&](double md) {
-      return static_cast<std::size_t>(std::lower_bound(s.begin(), s.end(), md, [](const Rad& a, double m) { return a.md < m; }) -
-                                      s.begin());
-    };
     const std::size_t first = l == 0 ? 0 : at_or_below(legs[l].from_md_m);
     const std::size_t end = l + 1 < legs.size() ? at_or_below(legs[l + 1].from_md_m) : n;
     const ToolCode& tool = legs[l].tool;
     const Derivatives d = derivatives(s, tool.revision);
     const std::string label = !program ? std::string() : (tool.name.empty() ? "leg " + std::to_string(l + 1) : tool.name) + ": ";
     for (const Term& t : tool.terms) {
-      TermEffect e = leg_effect(s, d, t, tool, field, first, std::max(first, end));
+      TermEffect e = leg_effect(s, d, t, tool, field, first, end);
       const bool shared = t.propagation == Propagation::WellByWell || t.propagation == Propagation::Global;
       const auto same = std::find_if(draws.begin(), draws.end(), [&](const Draw& x) {
         return shared && x.code == t.code && x.propagation == t.propagation && x.effect.group.empty() && e.group.empty();

@@ -68,13 +68,11 @@ void Survey::start_leg(iscwsa::ToolCode tool) {
   prepare(tool);
   if (rows_.empty()) {
     options_.tool_code = std::move(tool);
-    options_.later_legs.clear();
     return;
   }
-  // Every later station lies deeper than this (duplicates are refused).
-  const double from = rows_.back().station.md_m + kDuplicateDepthM;
-  while (!options_.later_legs.empty() && options_.later_legs.back().from_md_m >= from) options_.later_legs.pop_back();
-  options_.later_legs.push_back({from, std::move(tool)});
+  // Every later station lies deeper than this (duplicates are refused). The program's legs that
+  // start deeper stay: they were given for depths not reached yet.
+  iscwsa::insert_leg(options_.later_legs, {rows_.back().station.md_m + kDuplicateDepthM, std::move(tool)});
 }
 
 const iscwsa::ToolCode* Survey::tool_code_at(double md_m) const {

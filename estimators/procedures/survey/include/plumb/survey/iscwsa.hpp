@@ -128,6 +128,10 @@ struct Leg {
 // strictly (std::invalid_argument otherwise).
 Result propagate(const std::vector<Station>& stations, const std::vector<Leg>& legs, const Field& field);
 
+// Places `leg` among a program's legs (sorted by depth): one that starts at the same depth is
+// replaced, those deeper stay.
+void insert_leg(std::vector<Leg>& legs, Leg leg);
+
 // A tool code file is read by plumb/survey/tool_code_file.hpp (estimators/formats/survey_file).
 
 // The built-in tool codes: "MWD" (ISCWSA MWD revision 5, OWSG values of 5.1.1: DEC-OH 0.21 deg),

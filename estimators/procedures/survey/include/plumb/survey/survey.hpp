@@ -103,9 +103,10 @@ class Survey {
   // is impossible: depth going backwards or repeated, inclination outside [0, 180], azimuth not finite.
   const SurveyRow& add(const Station& station);
   // From the next station on, the survey is priced by `tool`, a leg of its own (a re-tuned
-  // navigator's figures); the stations already added keep their uncertainty. Before any station
-  // it replaces the survey's tool code. Throws std::invalid_argument as the constructor does for a
-  // tool code that cannot work (a gyrocompass without the latitude), or without a tool code to follow.
+  // navigator's figures), down to the next leg given (SurveyOptions::later_legs); the stations
+  // already added keep their uncertainty. Before any station it replaces the first leg's tool code.
+  // Throws std::invalid_argument as the constructor does for a tool code that cannot work (a
+  // gyrocompass without the latitude), or without a tool code to follow.
   void start_leg(iscwsa::ToolCode tool);
   // The tool code that prices a station at this depth: the last leg starting at or above it.
   const iscwsa::ToolCode* tool_code_at(double md_m) const;
