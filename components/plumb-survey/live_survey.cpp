@@ -106,7 +106,7 @@ class LiveSurvey {
                                                                    transport::Qos::sensor_stream()));
     note(clock_.describe() + (clock_.given() ? "" : "; matching the stops on " + o_.sensor_topic + " with the depth's"));
     if (!error_model_said_.empty()) note(error_model_said_);
-    note("error model " + (result_.options().tool_code ? result_.options().tool_code->name : std::string("plumb")) +
+    note("error model " + survey::error_model_text(result_.options()) +
          (result_.options().station_sigma_beyond_model ? ": each station's own sigma counts by its excess over the model's"
                                                        : ""));
     clock_said_ = clock_.given();  // said once above; an estimate is said when it comes

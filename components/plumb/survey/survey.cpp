@@ -135,6 +135,8 @@ int run_survey(const SurveyCommandOptions& o) {
   else survey::write_file_atomically(o.output, text);
   for (const auto& n : notes) std::cerr << "plumb survey: " << n << '\n';
   const auto& c = detector.counters();
+  if (!result.options().later_legs.empty())
+    std::cerr << "plumb survey: error model " << survey::error_model_text(result.options()) << '\n';
   std::cerr << "plumb survey: " << result.rows().size() << " station(s), " << result.failed_qc() << " failed QC";
   if (o.stations.empty()) std::cerr << " (" << survey::describe_windows(c) << ")";
   std::cerr << '\n';

@@ -111,7 +111,7 @@ with open(sys.argv[1], "w") as out:
         out.write(f"{md},{0 if md <= 1200 else min(60, (md - 1200) / 10)},75\n")
 PY
 program=(--stations "$work/well.csv" "${skip[@]}" --reference true --declination 0 --latitude 60)
-"$bin/plumb" survey "${program[@]}" --error-model GYRO-NS --error-model-from 1230:MWD -o "$work/program.csv" 2> /dev/null &&
+"$bin/plumb" survey "${program[@]}" --error-model GYRO-NS --error-model-from 1230:MWD -o "$work/program.csv" 2> "$work/program.err" &&
 "$bin/plumb" survey "${program[@]}" --error-model GYRO-NS -o "$work/gyro.csv" 2> /dev/null &&
 "$bin/plumb" survey "${program[@]}" --error-model MWD -o "$work/mwd.csv" 2> /dev/null ||
   fail "plumb survey --error-model-from failed"
@@ -124,6 +124,11 @@ assert all(a["cov_nn"] == b["cov_nn"] and a["cov_ee"] == b["cov_ee"] for a, b in
 end = [float(r[-1]["cov_ee"]) for r in (program, gyro, mwd)]
 assert end[0] != end[1] and end[0] != end[2], end
 PY
+if grep -q "^plumb survey: error model GYRO-NS (.*); from MD 1230 m MWD (" "$work/program.err"; then
+  pass "the program said: $(grep "error model" "$work/program.err")"
+else
+  fail "the program not said: $(cat "$work/program.err")"
+fi
 expect_error "a leg's unknown model" "--error-model-from 'NOPE': no such tool code file" "$bin/plumb" survey "${program[@]}" --error-model GYRO-NS --error-model-from 1230:NOPE -o "$work/x.csv"
 expect_error "a leg below plumb's own terms" "--error-model-from needs an ISCWSA error model above its depth" "$bin/plumb" survey "${program[@]}" --error-model plumb --error-model-from 1230:MWD -o "$work/x.csv"
 expect_error "a leg without its depth" "--error-model-from 'MWD': expected MD:MODEL" "$bin/plumb" survey "${program[@]}" --error-model GYRO-NS --error-model-from MWD -o "$work/x.csv"

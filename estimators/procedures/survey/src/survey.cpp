@@ -52,6 +52,13 @@ Survey::Survey(SurveyOptions o) : options_(std::move(o)) {
   for (auto& leg : options_.later_legs) prepare(leg.tool);
 }
 
+std::string error_model_text(const SurveyOptions& options) {
+  if (!options.tool_code) return "plumb";
+  std::string out = options.tool_code->name;
+  for (const auto& leg : options.later_legs) out += "; from MD " + number(leg.from_md_m) + " m " + leg.tool.name;
+  return out;
+}
+
 void Survey::prepare(iscwsa::ToolCode& tool) const {
   require(!iscwsa::needs_latitude(tool) || std::isfinite(options_.latitude_deg),
           "the error model " + tool.name + " gyrocompasses: it needs the well's latitude (--latitude)");

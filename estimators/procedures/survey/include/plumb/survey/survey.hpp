@@ -84,6 +84,10 @@ struct SurveyOptions {
   Eigen::Vector3d tie_in = Eigen::Vector3d::Zero();  // position of the first station (north, east, tvd)
 };
 
+// The error model in a line: the tool code's name, each later leg's after it ("GYRO-NS (...); from
+// MD 1230 m MWD (...)"), or "plumb" (plumb's own terms).
+std::string error_model_text(const SurveyOptions& options);
+
 // A station that cannot enter the survey's geometry: depth not increasing, angles out of range,
 // numbers not finite. Its what() is one line naming the station.
 struct StationError : std::invalid_argument {
