@@ -52,7 +52,12 @@ wait_for "$work/survey.err" "attitude writer matched" 60 || fail "plumb-survey n
 "$bin/plumb-sim" --scenario drilling-survey --transport "$host_t" --rate x20 --reliable --wait-subscribers 20 \
   > "$work/sim.out" 2>&1 &
 pids+=($!)
-rows() { grep -c "^[0-9]" "$work/survey.csv" 2> /dev/null || true; }
+# The survey file's station rows so far (0 before the file exists).
+rows() {
+  local n
+  n=$(grep -c "^[0-9]" "$work/survey.csv" 2> /dev/null)
+  echo "${n:-0}"
+}
 # After two stations: the change must reach the survey before its fifth, a station or two later.
 for ((i = 0; i < 600 && $(rows) < 2; ++i)); do sleep 0.1; done
 out=$("$bin/plumb" param set "$host" strapdown gyro_bias_dph 2 --transport "$survey_t" 2>&1) || fail "plumb param set: $out"
